@@ -1,0 +1,49 @@
+#pragma once
+/// The mjray command line.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "mjray/lua/scene_loader.h"
+
+namespace mjray {
+
+/// Everything the command line can say.
+struct CommandLine {
+  std::filesystem::path scene;
+  int max_reflection_depth = 8;        // -r
+  int max_refraction_depth = 8;        // -f
+  std::optional<int> grid_size;        // -g
+  bool optimal_grid = false;           // -o
+  int area_light_samples = 1;          // -s
+  int antialias_samples = 0;           // -a
+  std::string accel;                   // --accel; empty = decided by -g/-o or bvh
+  int threads = 0;                     // -j
+  std::optional<std::filesystem::path> output;  // --output
+  std::optional<std::filesystem::path> outdir;  // --outdir
+  bool print_stats = false;            // --stats
+  std::optional<std::filesystem::path> stats_json;
+  uint64_t seed = 0;
+  bool quiet = false;
+  bool resume = false;
+  bool srgb = false;                   // --gamma srgb
+  SceneLoadOptions load;
+  bool show_help = false;
+  bool show_version = false;
+};
+
+/// Thrown for a bad command line; main prints it with the usage hint and exits 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Parses argv; throws UsageError.
+CommandLine parse_command_line(const std::vector<std::string>& args);
+
+/// The --help text.
+std::string usage_text();
+
+}  // namespace mjray

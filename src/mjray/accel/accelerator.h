@@ -1,0 +1,31 @@
+#pragma once
+/// The one narrow seam between visibility queries and the structures that answer them.
+
+#include <cstddef>
+#include <optional>
+#include <string_view>
+
+#include "mjray/core/bounds.h"
+#include "mjray/core/ray.h"
+#include "mjray/geometry/hit.h"
+
+namespace mjray {
+
+/// A spatial index over a World's primitives. Implementations: none (brute force), grid,
+/// bvh, embree. All are thread-safe for queries and never allocate or throw on the ray path.
+class Accelerator {
+ public:
+  virtual ~Accelerator() = default;
+  /// The nearest hit with t in (0, t_max), or nothing.
+  virtual std::optional<Hit> intersect(const Ray& ray, float t_max) const = 0;
+  /// Whether anything is hit with t in (0, t_max) (shadow rays; any hit will do).
+  virtual bool occluded(const Ray& ray, float t_max) const = 0;
+  /// Bounds of all primitives.
+  virtual Bounds3 bounds() const = 0;
+  /// The name users pass to --accel.
+  virtual std::string_view name() const = 0;
+  /// Bytes used by the structure itself (not the World).
+  virtual size_t memory_bytes() const = 0;
+};
+
+}  // namespace mjray

@@ -1,0 +1,26 @@
+#pragma once
+/// Chooses and builds the accelerator the user asked for.
+
+#include <memory>
+#include <string>
+
+#include "mjray/accel/accelerator.h"
+#include "mjray/scene/world.h"
+
+namespace mjray {
+
+/// Which structure to build and how.
+struct AcceleratorOptions {
+  std::string kind = "bvh";  ///< "none", "grid", "bvh" or "embree"
+  int grid_size = 0;         ///< voxels per axis for "grid"; 0 with kind "grid" = optimal
+  int threads = 0;           ///< build threads, 0 = all cores
+};
+
+/// The names --accel accepts in this build.
+std::string accelerator_names();
+
+/// Builds the accelerator over `world` (which must outlive it). Throws SceneError for an
+/// unknown or unavailable kind.
+std::unique_ptr<Accelerator> make_accelerator(const World& world, const AcceleratorOptions& options);
+
+}  // namespace mjray

@@ -1,0 +1,56 @@
+#include "mjray/geometry/box.h"
+
+#include <cmath>
+#include <utility>
+
+namespace mjray {
+
+std::optional<float> intersect_unit_cube(const Ray& r, float t_max) {
+  // Slab test (Williams et al. 2005): IEEE infinities handle axis-parallel rays.
+  float t_enter = -kInfinity, t_exit = kInfinity;
+  for (int axis = 0; axis < 3; ++axis) {
+    const float inv = 1 / r.direction[axis];
+    float t0 = (0 - r.origin[axis]) * inv;
+    float t1 = (1 - r.origin[axis]) * inv;
+    if (std::isnan(t0) || std::isnan(t1)) {
+      // A zero direction component with the origin on a face plane: inside iff within [0,1].
+      if (!(r.origin[axis] >= 0 && r.origin[axis] <= 1)) return std::nullopt;
+      continue;
+    }
+    if (t0 > t1) std::swap(t0, t1);
+    t_enter = std::max(t_enter, t0);
+    t_exit = std::min(t_exit, t1);
+  }
+  if (!(t_enter <= t_exit)) return std::nullopt;
+  // From outside the ray hits the entry face; from inside, the exit face.
+  const float t = t_enter > 0 ? t_enter : t_exit;
+  if (!(t > 0) || !(t < t_max)) return std::nullopt;
+  return t;
+}
+
+CubeFace unit_cube_face(const Point3& p) {
+  // Pick the coordinate closest to a face plane (0 or 1).
+  CubeFace best{0, -1};
+  float best_distance = kInfinity;
+  for (int axis = 0; axis < 3; ++axis) {
+    const float d0 = std::abs(p[axis]), d1 = std::abs(p[axis] - 1);
+    if (d0 < best_distance) best_distance = d0, best = {axis, -1};
+    if (d1 < best_distance) best_distance = d1, best = {axis, +1};
+  }
+  return best;
+}
+
+Normal3 unit_cube_normal(const Point3& p) {
+  const CubeFace f = unit_cube_face(p);
+  Vector3 n;
+  n[f.axis] = float(f.side);
+  return Normal3(n);
+}
+
+Point2 unit_cube_uv(const Point3& p) {
+  const CubeFace f = unit_cube_face(p);
+  const int a = (f.axis + 1) % 3, b = (f.axis + 2) % 3;
+  return {std::clamp(p[a], 0.f, 1.f), std::clamp(p[b], 0.f, 1.f)};
+}
+
+}  // namespace mjray

@@ -1,0 +1,63 @@
+#pragma once
+/// Recursive ray tracing with the CS 488 Phong model, hard shadows and secondary rays.
+
+#include <cstdint>
+
+#include "mjray/accel/accelerator.h"
+#include "mjray/core/color.h"
+#include "mjray/core/ray.h"
+#include "mjray/scene/world.h"
+
+namespace mjray {
+
+/// Limits on recursion (-r, -f).
+struct IntegratorSettings {
+  int max_reflection_depth = 8;  ///< reflection, glossy and Fresnel reflection rays
+  int max_refraction_depth = 8;  ///< transmission rays
+};
+
+/// Rays cast, by kind; each thread keeps its own and they are summed at the end.
+struct RayCounters {
+  uint64_t primary = 0;
+  uint64_t secondary = 0;
+  uint64_t shadow = 0;
+
+  RayCounters& operator+=(const RayCounters& o) {
+    primary += o.primary;
+    secondary += o.secondary;
+    shadow += o.shadow;
+    return *this;
+  }
+  uint64_t total() const { return primary + secondary + shadow; }
+};
+
+/// Computes the colour seen along a camera ray.
+class WhittedIntegrator {
+ public:
+  WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings)
+      : world_(world), accel_(accel), settings_(settings) {}
+
+  /// The colour along a primary ray (direction unit length).
+  Color radiance(const Ray& ray, RayCounters& counters) const;
+
+ private:
+  struct Depth {
+    int reflection = 0;
+    int refraction = 0;
+  };
+
+  Color trace(const Ray& ray, Depth depth, RayCounters& counters) const;
+  /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
+  Color direct_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
+                     const Material& material, RayCounters& counters) const;
+  /// Light arriving by reflection and refraction: the hook that the materials of the
+  /// original project's extensions plug into. Plain Phong materials add nothing.
+  Color secondary_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
+                        const Material& material, Depth depth, RayCounters& counters) const;
+
+  const World& world_;
+  const Accelerator& accel_;
+  IntegratorSettings settings_;
+};
+
+}  // namespace mjray

@@ -1,0 +1,404 @@
+// The CS 488 `gr.*` scene API: node constructors, node methods, materials, lights and
+// gr.render, which snapshots the node graph into a RenderJob.
+
+#include <cmath>
+#include <map>
+#include <new>
+#include <set>
+#include <string>
+
+extern "C" {
+#include <lauxlib.h>
+#include <lua.h>
+}
+
+#include "mjray/io/obj_loader.h"
+#include "mjray/io/path_resolver.h"
+#include "mjray/lua/lua_context.h"
+
+namespace mjray::lua {
+
+namespace {
+
+constexpr const char* kNodeType = "gr.node";
+constexpr const char* kMaterialType = "gr.material";
+constexpr const char* kLightType = "gr.light";
+
+// --- userdata holding a shared_ptr ---------------------------------------------------------
+
+template <class T>
+void push_shared(lua_State* L, std::shared_ptr<T> value, const char* type) {
+  void* memory = lua_newuserdatauv(L, sizeof(std::shared_ptr<T>), 0);
+  new (memory) std::shared_ptr<T>(std::move(value));
+  luaL_setmetatable(L, type);
+}
+
+template <class T>
+std::shared_ptr<T>* test_shared(lua_State* L, int index, const char* type) {
+  return static_cast<std::shared_ptr<T>*>(luaL_testudata(L, index, type));
+}
+
+template <class T>
+int collect_shared(lua_State* L) {
+  // Every type's __gc runs this on its own userdata.
+  auto* p = static_cast<std::shared_ptr<T>*>(lua_touserdata(L, 1));
+  if (p) p->~shared_ptr<T>();
+  return 0;
+}
+
+// --- argument readers (throw ArgumentError; `guarded` adds the caller's file:line) --------
+
+std::string describe(lua_State* L, int index) {
+  const int type = lua_type(L, index);
+  if (type == LUA_TTABLE) return "a table of " + std::to_string(lua_rawlen(L, index)) + " values";
+  if (type == LUA_TNONE) return "nothing";
+  return std::string("a ") + lua_typename(L, type);
+}
+
+[[noreturn]] void bad_argument(lua_State* L, const char* fn, int index, const char* what,
+                               const char* expected) {
+  throw ArgumentError(std::string(fn) + ": argument " + std::to_string(index) + " (" + what +
+                      ") must be " + expected + ", got " + describe(L, index));
+}
+
+std::string arg_string(lua_State* L, int index, const char* fn, const char* what) {
+  if (lua_type(L, index) != LUA_TSTRING) bad_argument(L, fn, index, what, "a string");
+  size_t length = 0;
+  const char* text = lua_tolstring(L, index, &length);
+  return std::string(text, length);
+}
+
+double arg_number(lua_State* L, int index, const char* fn, const char* what) {
+  if (lua_type(L, index) != LUA_TNUMBER) bad_argument(L, fn, index, what, "a number");
+  const double value = lua_tonumber(L, index);
+  if (!std::isfinite(value)) bad_argument(L, fn, index, what, "a finite number");
+  return value;
+}
+
+/// A {x, y, z} table: exactly 3 finite numbers.
+std::array<double, 3> arg_tuple3(lua_State* L, int index, const char* fn, const char* what) {
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 3)
+    bad_argument(L, fn, index, what, "a table of 3 numbers");
+  std::array<double, 3> out{};
+  for (int i = 0; i < 3; ++i) {
+    const bool is_number = lua_rawgeti(L, index, i + 1) == LUA_TNUMBER;
+    out[size_t(i)] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+    if (!is_number || !std::isfinite(out[size_t(i)]))
+      bad_argument(L, fn, index, what, "a table of 3 finite numbers");
+  }
+  return out;
+}
+
+Point3 arg_point(lua_State* L, int index, const char* fn, const char* what) {
+  const auto t = arg_tuple3(L, index, fn, what);
+  return {float(t[0]), float(t[1]), float(t[2])};
+}
+Vector3 arg_vector(lua_State* L, int index, const char* fn, const char* what) {
+  const auto t = arg_tuple3(L, index, fn, what);
+  return {float(t[0]), float(t[1]), float(t[2])};
+}
+Color arg_color(lua_State* L, int index, const char* fn, const char* what) {
+  const auto t = arg_tuple3(L, index, fn, what);
+  return {float(t[0]), float(t[1]), float(t[2])};
+}
+
+std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, const char* what) {
+  auto* node = test_shared<LuaNode>(L, index, kNodeType);
+  if (!node) bad_argument(L, fn, index, what, "a node");
+  return *node;
+}
+
+// --- node constructors ---------------------------------------------------------------------
+
+int new_node(lua_State* L, const char* fn, NodeShape shape, Transform node_from_object = {}) {
+  auto node = std::make_shared<LuaNode>();
+  node->name = arg_string(L, 1, fn, "name");
+  node->where = caller_location(L);
+  node->shape = shape;
+  node->node_from_object = node_from_object;
+  push_shared(L, std::move(node), kNodeType);
+  return 1;
+}
+
+int gr_node(lua_State* L) { return new_node(L, "gr.node", NodeShape::kNone); }
+int gr_joint(lua_State* L) { return new_node(L, "gr.joint", NodeShape::kNone); }
+int gr_sphere(lua_State* L) { return new_node(L, "gr.sphere", NodeShape::kSphere); }
+int gr_cube(lua_State* L) { return new_node(L, "gr.cube", NodeShape::kCube); }
+
+int gr_nh_sphere(lua_State* L) {
+  const Vector3 centre = arg_vector(L, 2, "gr.nh_sphere", "centre");
+  const auto radius = float(arg_number(L, 3, "gr.nh_sphere", "radius"));
+  return new_node(L, "gr.nh_sphere", NodeShape::kSphere,
+                  Transform::translate(centre) * Transform::scale(radius, radius, radius));
+}
+
+int gr_nh_box(lua_State* L) {
+  const Vector3 corner = arg_vector(L, 2, "gr.nh_box", "corner");
+  const auto size = float(arg_number(L, 3, "gr.nh_box", "size"));
+  return new_node(L, "gr.nh_box", NodeShape::kCube,
+                  Transform::translate(corner) * Transform::scale(size, size, size));
+}
+
+/// gr.mesh(name, {{x,y,z},...}, {{i,j,k,...},...}) with 0-based convex polygons.
+std::shared_ptr<const ObjMesh> table_mesh(lua_State* L, const char* fn) {
+  auto mesh = std::make_shared<ObjMesh>();
+  const auto vertex_count = lua_Integer(lua_rawlen(L, 2));
+  for (lua_Integer i = 1; i <= vertex_count; ++i) {
+    lua_rawgeti(L, 2, i);
+    const int top = lua_gettop(L);
+    if (lua_type(L, top) != LUA_TTABLE || lua_rawlen(L, top) != 3) {
+      lua_pop(L, 1);
+      throw ArgumentError(std::string(fn) + ": vertex " + std::to_string(i) + " must be a table of 3 numbers");
+    }
+    mesh->positions.push_back(arg_point(L, top, fn, "vertex"));
+    lua_pop(L, 1);
+  }
+  const auto face_count = lua_Integer(lua_rawlen(L, 3));
+  for (lua_Integer f = 1; f <= face_count; ++f) {
+    lua_rawgeti(L, 3, f);
+    const int top = lua_gettop(L);
+    const auto corners = lua_type(L, top) == LUA_TTABLE ? lua_Integer(lua_rawlen(L, top)) : 0;
+    std::vector<int32_t> index;
+    for (lua_Integer c = 1; c <= corners; ++c) {
+      lua_rawgeti(L, top, c);
+      int is_integer = 0;
+      const lua_Integer value = lua_tointegerx(L, -1, &is_integer);
+      lua_pop(L, 1);
+      if (!is_integer || value < 0 || value >= vertex_count) {
+        lua_pop(L, 1);
+        throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) + " has index " +
+                            (is_integer ? std::to_string(value) : std::string("that is not an integer")) +
+                            " outside 0.." + std::to_string(vertex_count - 1));
+      }
+      index.push_back(int32_t(value));
+    }
+    lua_pop(L, 1);
+    if (index.size() < 3)
+      throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) + " has fewer than 3 vertices");
+    // Fan-triangulate the convex polygon.
+    for (size_t k = 2; k < index.size(); ++k)
+      mesh->triangles.push_back({ObjCorner{index[0]}, ObjCorner{index[k - 1]}, ObjCorner{index[k]}});
+    ++mesh->polygon_count;
+  }
+  if (mesh->positions.empty() || mesh->triangles.empty())
+    throw ArgumentError(std::string(fn) + ": a mesh needs at least one vertex and one face");
+  return mesh;
+}
+
+std::shared_ptr<const ObjMesh> file_mesh(lua_State* L, const std::string& name, const char* fn) {
+  LoaderContext& ctx = context(L);
+  const auto path = resolve_input(name, ctx.script_dir);
+  if (!path) throw ArgumentError(std::string(fn) + ": cannot find mesh file '" + name + "'");
+  const auto key = std::filesystem::weakly_canonical(*path);
+  auto& cached = ctx.mesh_cache[key];
+  if (!cached) cached = std::make_shared<ObjMesh>(load_obj(*path));
+  return cached;
+}
+
+int gr_mesh(lua_State* L) {
+  const char* fn = "gr.mesh";
+  std::shared_ptr<const ObjMesh> mesh;
+  if (lua_type(L, 2) == LUA_TSTRING) {
+    mesh = file_mesh(L, lua_tostring(L, 2), fn);
+  } else if (lua_type(L, 2) == LUA_TTABLE && lua_type(L, 3) == LUA_TTABLE) {
+    mesh = table_mesh(L, fn);
+    context(L).saw_table_mesh = true;
+  } else {
+    bad_argument(L, fn, 2, "mesh", "an OBJ file name, or a vertex table followed by a face table");
+  }
+  new_node(L, fn, NodeShape::kMesh);
+  (*test_shared<LuaNode>(L, -1, kNodeType))->mesh = std::move(mesh);
+  return 1;
+}
+
+// --- node methods --------------------------------------------------------------------------
+
+int node_add_child(lua_State* L) {
+  auto& parent = arg_node(L, 1, "add_child", "self");
+  auto& child = arg_node(L, 2, "add_child", "child");
+  parent->children.push_back(child);
+  return 0;
+}
+
+int node_set_material(lua_State* L) {
+  auto& node = arg_node(L, 1, "set_material", "self");
+  auto* material = test_shared<Material>(L, 2, kMaterialType);
+  if (!material) bad_argument(L, "set_material", 2, "material", "a material");
+  node->material = *material;
+  return 0;
+}
+
+int node_translate(lua_State* L) {
+  auto& node = arg_node(L, 1, "translate", "self");
+  const Vector3 d(float(arg_number(L, 2, "translate", "x")), float(arg_number(L, 3, "translate", "y")),
+                  float(arg_number(L, 4, "translate", "z")));
+  node->transform_calls.push_back(Transform::translate(d));
+  return 0;
+}
+
+int node_scale(lua_State* L) {
+  auto& node = arg_node(L, 1, "scale", "self");
+  const auto x = float(arg_number(L, 2, "scale", "x")), y = float(arg_number(L, 3, "scale", "y")),
+             z = float(arg_number(L, 4, "scale", "z"));
+  if (x == 0 || y == 0 || z == 0) throw ArgumentError("scale: a scale factor of 0 flattens the node to nothing");
+  node->transform_calls.push_back(Transform::scale(x, y, z));
+  return 0;
+}
+
+int node_rotate(lua_State* L) {
+  auto& node = arg_node(L, 1, "rotate", "self");
+  const std::string axis = arg_string(L, 2, "rotate", "axis");
+  const auto degrees = float(arg_number(L, 3, "rotate", "angle"));
+  const std::string axes = "xyzXYZ";
+  const auto at = axes.find(axis);
+  if (axis.size() != 1 || at == std::string::npos)
+    throw ArgumentError("rotate: axis must be 'x', 'y' or 'z', got '" + axis + "'");
+  node->transform_calls.push_back(Transform::rotate(int(at % 3), degrees));
+  return 0;
+}
+
+// --- materials and lights ------------------------------------------------------------------
+
+int gr_material(lua_State* L) {
+  const char* fn = "gr.material";
+  PhongMaterial m{arg_color(L, 1, fn, "kd"), arg_color(L, 2, fn, "ks"), float(arg_number(L, 3, fn, "shininess"))};
+  push_shared(L, std::make_shared<Material>(m), kMaterialType);
+  return 1;
+}
+
+int gr_light(lua_State* L) {
+  const char* fn = "gr.light";
+  PointLight light;
+  light.position = arg_point(L, 1, fn, "position");
+  light.colour = arg_color(L, 2, fn, "colour");
+  const auto falloff = arg_tuple3(L, 3, fn, "falloff");
+  for (int i = 0; i < 3; ++i) light.falloff[i] = float(falloff[size_t(i)]);
+  push_shared(L, std::make_shared<Light>(light), kLightType);
+  return 1;
+}
+
+// --- gr.render: snapshot the graph ---------------------------------------------------------
+
+/// Copies the live graph into immutable nodes, composing each node's transform calls by the
+/// chosen rule and keeping shared children shared.
+class Snapshot {
+ public:
+  explicit Snapshot(bool post_multiply) : post_multiply_(post_multiply) {}
+
+  std::shared_ptr<const SceneNode> copy(const std::shared_ptr<LuaNode>& live) {
+    if (auto it = done_.find(live.get()); it != done_.end()) return it->second;
+    if (!in_progress_.insert(live.get()).second)
+      throw ArgumentError("node '" + live->name + "' (created at " + live->where.to_string() +
+                          ") is its own ancestor: the scene graph has a cycle");
+    auto node = std::make_shared<SceneNode>();
+    node->name = live->name;
+    node->where = live->where;
+    node->shape = live->shape;
+    node->node_from_object = live->node_from_object;
+    node->mesh = live->mesh;
+    node->material = live->material;
+    for (const Transform& call : live->transform_calls)
+      node->parent_from_node = post_multiply_ ? node->parent_from_node * call : call * node->parent_from_node;
+    for (const auto& child : live->children) node->children.push_back(copy(child));
+    in_progress_.erase(live.get());
+    done_[live.get()] = node;
+    return node;
+  }
+
+ private:
+  bool post_multiply_;
+  std::map<const LuaNode*, std::shared_ptr<const SceneNode>> done_;
+  std::set<const LuaNode*> in_progress_;
+};
+
+int gr_render(lua_State* L) {
+  const char* fn = "gr.render";
+  LoaderContext& ctx = context(L);
+  RenderJob job;
+  job.where = caller_location(L);
+  auto& root = arg_node(L, 1, fn, "root node");
+  job.output = arg_string(L, 2, fn, "output file");
+  const double width = arg_number(L, 3, fn, "width"), height = arg_number(L, 4, fn, "height");
+  if (width < 1 || height < 1 || width != std::floor(width) || height != std::floor(height) ||
+      width > 65536 || height > 65536)
+    throw ArgumentError("gr.render: width and height must be whole numbers from 1 to 65536, got " +
+                        std::to_string(width) + " x " + std::to_string(height));
+  job.width = int(width);
+  job.height = int(height);
+  job.camera.eye = arg_point(L, 5, fn, "eye");
+  job.camera.view = arg_vector(L, 6, fn, "view");
+  job.camera.up = arg_vector(L, 7, fn, "up");
+  job.camera.fovy_degrees = float(arg_number(L, 8, fn, "fovy"));
+  job.ambient = arg_color(L, 9, fn, "ambient");
+  if (lua_type(L, 10) != LUA_TTABLE) bad_argument(L, fn, 10, "lights", "a table of lights");
+  const auto light_count = lua_Integer(lua_rawlen(L, 10));
+  if (light_count == 0) throw ArgumentError("gr.render: the lights table is empty (give at least one gr.light)");
+  for (lua_Integer i = 1; i <= light_count; ++i) {
+    lua_rawgeti(L, 10, i);
+    auto* light = test_shared<Light>(L, -1, kLightType);
+    lua_pop(L, 1);
+    if (!light) throw ArgumentError("gr.render: lights entry " + std::to_string(i) + " is not a light");
+    job.lights.push_back(**light);
+  }
+  // Check the camera now so the error points at this line.
+  if (!(length(job.camera.view) > 0)) throw ArgumentError("gr.render: the view direction is zero");
+  if (!(job.camera.fovy_degrees > 0 && job.camera.fovy_degrees < 180))
+    throw ArgumentError("gr.render: fovy must be between 0 and 180 degrees");
+
+  bool post = ctx.options.transform_order == TransformOrder::kPost;
+  if (ctx.options.transform_order == TransformOrder::kAuto) post = ctx.saw_table_mesh;
+  job.root = Snapshot(post).copy(root);
+  ctx.description->jobs.push_back(std::move(job));
+  return 0;
+}
+
+int node_tostring(lua_State* L) {
+  auto* node = test_shared<LuaNode>(L, 1, kNodeType);
+  lua_pushfstring(L, "gr.node '%s'", node ? (*node)->name.c_str() : "?");
+  return 1;
+}
+
+void new_type(lua_State* L, const char* type, lua_CFunction gc) {
+  luaL_newmetatable(L, type);
+  lua_pushcfunction(L, gc);
+  lua_setfield(L, -2, "__gc");
+  lua_pushstring(L, type);
+  lua_setfield(L, -2, "__name");
+}
+
+}  // namespace
+
+void register_gr(lua_State* L) {
+  // Node type: methods through __index.
+  new_type(L, kNodeType, collect_shared<LuaNode>);
+  static const luaL_Reg node_methods[] = {
+      {"add_child", guarded<node_add_child>}, {"set_material", guarded<node_set_material>},
+      {"translate", guarded<node_translate>}, {"scale", guarded<node_scale>},
+      {"rotate", guarded<node_rotate>},       {"render", guarded<gr_render>},
+      {nullptr, nullptr}};
+  luaL_newlib(L, node_methods);
+  lua_setfield(L, -2, "__index");
+  lua_pushcfunction(L, node_tostring);
+  lua_setfield(L, -2, "__tostring");
+  lua_pop(L, 1);
+
+  new_type(L, kMaterialType, collect_shared<Material>);
+  lua_newtable(L);
+  lua_setfield(L, -2, "__index");
+  lua_pop(L, 1);
+  new_type(L, kLightType, collect_shared<Light>);
+  lua_pop(L, 1);
+
+  static const luaL_Reg gr_functions[] = {
+      {"node", guarded<gr_node>},         {"joint", guarded<gr_joint>},
+      {"sphere", guarded<gr_sphere>},     {"cube", guarded<gr_cube>},
+      {"nh_sphere", guarded<gr_nh_sphere>}, {"nh_box", guarded<gr_nh_box>},
+      {"mesh", guarded<gr_mesh>},         {"material", guarded<gr_material>},
+      {"light", guarded<gr_light>},       {"render", guarded<gr_render>},
+      {nullptr, nullptr}};
+  luaL_newlib(L, gr_functions);
+  lua_setglobal(L, "gr");
+}
+
+}  // namespace mjray::lua

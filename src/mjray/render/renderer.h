@@ -1,0 +1,33 @@
+#pragma once
+/// Renders an image over tiles on all cores; every pixel is independent of thread and order.
+
+#include <functional>
+
+#include "mjray/camera/pinhole_camera.h"
+#include "mjray/core/image.h"
+#include "mjray/integrator/whitted_integrator.h"
+
+namespace mjray {
+
+/// How to schedule the work.
+struct RenderSettings {
+  int threads = 0;     ///< 0 = all cores
+  int tile_size = 16;  ///< pixels per tile side
+};
+
+/// What the render did.
+struct RenderStats {
+  RayCounters rays;
+  double seconds = 0;
+  int threads = 1;
+};
+
+/// Renders width × height pixels with one primary ray through each pixel centre.
+Image render_image(const PinholeCamera& camera, int width, int height,
+                   const WhittedIntegrator& integrator, const RenderSettings& settings,
+                   RenderStats* stats = nullptr);
+
+/// The number of worker threads `requested` means on this machine (0 = all cores).
+int resolve_thread_count(int requested);
+
+}  // namespace mjray

@@ -1,0 +1,66 @@
+#pragma once
+/// What a scene script describes: an immutable node DAG and the render jobs that use it.
+/// Built by lua/, turned into a flat World by flatten().
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mjray/camera/pinhole_camera.h"
+#include "mjray/core/color.h"
+#include "mjray/core/error.h"
+#include "mjray/core/transform.h"
+#include "mjray/io/obj_loader.h"
+#include "mjray/light/light.h"
+#include "mjray/material/material.h"
+
+namespace mjray {
+
+/// What a node draws.
+enum class NodeShape {
+  kNone,    ///< a group (gr.node, gr.joint)
+  kSphere,  ///< unit sphere placed by shape_from_object (gr.sphere, gr.nh_sphere)
+  kCube,    ///< unit cube placed by shape_from_object (gr.cube, gr.nh_box)
+  kMesh,    ///< triangle mesh (gr.mesh)
+};
+
+/// One node of the scene DAG; a node may be the child of several parents.
+struct SceneNode {
+  std::string name;
+  FileLocation where;            ///< where the script created it
+  Transform parent_from_node;    ///< the node's own transform, composed from its calls
+  NodeShape shape = NodeShape::kNone;
+  Transform node_from_object;    ///< places the unit primitive (nh_sphere centre/radius, nh_box)
+  std::shared_ptr<const ObjMesh> mesh;          ///< for kMesh
+  std::shared_ptr<const Material> material;     ///< null: the default grey
+  std::vector<std::shared_ptr<const SceneNode>> children;
+};
+
+/// The background seen by rays that hit nothing: a vertical gradient over the ray direction.
+struct Background {
+  Color zenith{0.20f, 0.28f, 0.45f};   ///< straight up
+  Color horizon{0.62f, 0.68f, 0.78f};  ///< level and below
+};
+
+/// One gr.render call: what to draw, from where, into which file.
+struct RenderJob {
+  FileLocation where;                     ///< the gr.render call
+  std::shared_ptr<const SceneNode> root;
+  std::filesystem::path output;           ///< resolved against the script folder
+  int width = 0;
+  int height = 0;
+  CameraDescription camera;
+  Color ambient;
+  std::vector<Light> lights;
+  Background background;
+};
+
+/// Everything a script produced.
+struct SceneDescription {
+  std::filesystem::path script;
+  std::vector<RenderJob> jobs;
+  std::vector<std::string> warnings;  ///< "file:line: text", shown to the user
+};
+
+}  // namespace mjray
