@@ -1,0 +1,31 @@
+#pragma once
+/// Image output (8-bit PNG and binary PPM), written atomically, and reading those files back.
+
+#include <cstdint>
+#include <filesystem>
+
+#include "mjray/core/image.h"
+
+namespace mjray {
+
+/// How linear colours become 8-bit values.
+enum class OutputGamma { kLinear, kSrgb };
+
+/// Quantises a linear value to 8 bits: clamp to [0,1], optional sRGB encoding, round to nearest
+/// (v*255+0.5). NaN becomes 0.
+uint8_t to_8bit(float linear, OutputGamma gamma);
+
+/// Writes the image to `path`, format chosen by extension (.png 8-bit RGB, .ppm binary P6
+/// 8-bit); case-insensitive extension. Atomic: writes "<path>.tmp-<pid>" in the same folder,
+/// fsyncs, then renames over `path`, so a reader never sees a torn file and a failed write keeps
+/// the previous file intact. Throws OutputError("cannot write 'PATH': REASON") on any failure
+/// (unknown extension, missing or unwritable folder, disk full), removing the temporary file.
+void write_image(const Image& image, const std::filesystem::path& path,
+                 OutputGamma gamma = OutputGamma::kLinear);
+
+/// Reads an 8-bit PNG or PPM back (for tests and resume), format chosen by the file's magic
+/// bytes; throws OutputError("cannot read 'PATH': REASON") on failure. Values are v/255 (no
+/// gamma decoding).
+Image read_image(const std::filesystem::path& path);
+
+}  // namespace mjray

@@ -1,0 +1,299 @@
+#include "mjray/io/obj_loader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <system_error>
+
+#include "mjray/core/error.h"
+
+namespace mjray {
+namespace {
+
+constexpr bool is_blank(char c) { return c == ' ' || c == '\t'; }
+constexpr bool is_eol(char c) { return c == '\n' || c == '\r'; }
+
+// One pass over the text with a single cursor; the hot path (v, vn, vt, f lines) never allocates
+// except to grow the output vectors, and never throws unless the input is malformed. Reserving
+// from a pre-count of line prefixes was measured slower (a second pass over the text costs more
+// than the amortised vector growth).
+class ObjParser {
+ public:
+  ObjParser(std::string_view text, const std::string& source_name)
+      : p_(text.data()), end_(text.data() + text.size()), source_name_(source_name) {}
+
+  ObjMesh parse() {
+    // Skip a UTF-8 byte-order mark, which would otherwise hide the first statement.
+    constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+    if (std::string_view(p_, static_cast<size_t>(end_ - p_)).starts_with(kUtf8Bom)) p_ += 3;
+    while (true) {
+      skip_blanks();
+      if (p_ == end_) break;
+      if (is_eol(*p_)) {
+        consume_eol();
+        continue;
+      }
+      if (*p_ == '#') {
+        skip_comment();
+        continue;
+      }
+      // Compute the statement keyword and dispatch; "fo" is the obsolete spelling of "f".
+      // Everything else (mtllib, usemtl, o, g, s, l, p, vp, free-form) is geometry we ignore.
+      const char* keyword = p_;
+      while (p_ != end_ && !is_blank(*p_) && !is_eol(*p_)) ++p_;
+      const std::string_view statement(keyword, static_cast<size_t>(p_ - keyword));
+      if (statement == "v") {
+        parse_position();
+      } else if (statement == "f" || statement == "fo") {
+        parse_face();
+      } else if (statement == "vt") {
+        parse_uv();
+      } else if (statement == "vn") {
+        parse_normal();
+      } else {
+        skip_statement();
+      }
+    }
+    return std::move(mesh_);
+  }
+
+ private:
+  // Spaces, tabs, and a backslash that continues the statement on the next line.
+  void skip_blanks() {
+    while (true) {
+      while (p_ != end_ && is_blank(*p_)) ++p_;
+      if (p_ == end_ || *p_ != '\\') return;
+      const char* next = p_ + 1;
+      while (next != end_ && is_blank(*next)) ++next;
+      if (next == end_ || !is_eol(*next)) return;
+      p_ = next;
+      consume_eol();
+    }
+  }
+
+  // "\n", "\r\n" and a lone "\r" each end one line.
+  void consume_eol() {
+    if (*p_ == '\r' && p_ + 1 != end_ && p_[1] == '\n') ++p_;
+    ++p_;
+    ++line_;
+  }
+
+  void skip_comment() {
+    while (p_ != end_ && !is_eol(*p_)) ++p_;
+    if (p_ != end_) consume_eol();
+  }
+
+  // Ignores the rest of a statement, following backslash continuations.
+  void skip_statement() {
+    while (p_ != end_) {
+      skip_blanks();
+      if (p_ == end_) return;
+      if (is_eol(*p_)) {
+        consume_eol();
+        return;
+      }
+      if (*p_ == '#') {
+        skip_comment();
+        return;
+      }
+      ++p_;
+    }
+  }
+
+  bool at_statement_end() const { return p_ == end_ || is_eol(*p_) || *p_ == '#'; }
+
+  bool ends_token(const char* q) const {
+    return q == end_ || is_blank(*q) || is_eol(*q) || *q == '#' || *q == '\\';
+  }
+
+  void parse_position() {
+    const float x = read_coordinate("v", 0, 3);
+    const float y = read_coordinate("v", 1, 3);
+    const float z = read_coordinate("v", 2, 3);
+    mesh_.positions.emplace_back(x, y, z);
+    skip_statement();  // an optional w, or the common "v x y z r g b" colour extension
+  }
+
+  void parse_normal() {
+    const float x = read_coordinate("vn", 0, 3);
+    const float y = read_coordinate("vn", 1, 3);
+    const float z = read_coordinate("vn", 2, 3);
+    mesh_.normals.emplace_back(x, y, z);
+    skip_statement();
+  }
+
+  void parse_uv() {
+    Point2 uv;
+    uv.u = read_coordinate("vt", 0, 1);
+    skip_blanks();
+    if (!at_statement_end()) uv.v = read_coordinate("vt", 1, 1);
+    mesh_.uvs.push_back(uv);
+    skip_statement();  // an optional w
+  }
+
+  float read_coordinate(const char* statement, int index, int needed) {
+    skip_blanks();
+    if (at_statement_end()) {
+      fail(std::string(statement) + " needs " + (needed > 1 ? "" : "at least ") +
+           std::to_string(needed) + " coordinate" + (needed > 1 ? "s" : "") + ", found " +
+           std::to_string(index));
+    }
+    const char* start = p_;
+    const char* first = *p_ == '+' ? p_ + 1 : p_;  // from_chars rejects an explicit plus sign
+    float value = 0;
+    const auto [ptr, ec] = std::from_chars(first, end_, value);
+    if (ec == std::errc() && ends_token(ptr) && std::isfinite(value)) {
+      p_ = ptr;
+      return value;
+    }
+    return read_coordinate_slow(statement, start, first);
+  }
+
+  // Reports a malformed number, or accepts one that underflows float (it rounds to zero).
+  float read_coordinate_slow(const char* statement, const char* start, const char* first) {
+    const std::string prefix = std::string(statement) + " coordinate '" + token_at(start) + "'";
+    double value = 0;
+    const auto [ptr, ec] = std::from_chars(first, end_, value);
+    if (!ends_token(ptr) || ec == std::errc::invalid_argument) fail(prefix + " is not a number");
+    if (ec == std::errc() && !std::isfinite(value)) fail(prefix + " is not finite");
+    if (ec == std::errc() && std::abs(value) <= std::numeric_limits<float>::max()) {
+      p_ = ptr;
+      return static_cast<float>(value);
+    }
+    // Compute whether a double-range failure was an underflow from the exponent's sign.
+    const char* exponent = first;
+    while (exponent != ptr && *exponent != 'e' && *exponent != 'E') ++exponent;
+    if (ec == std::errc::result_out_of_range && exponent + 1 < ptr && exponent[1] == '-') {
+      p_ = ptr;
+      return 0.0f;
+    }
+    fail(prefix + " is out of range");
+  }
+
+  void parse_face() {
+    // Emit the fan (c0, ci-1, ci) as corners arrive, so no per-face buffer is needed.
+    ObjCorner first, previous;
+    size_t corners = 0;
+    while (true) {
+      skip_blanks();
+      if (at_statement_end()) break;
+      const ObjCorner corner = read_corner();
+      if (corners >= 2) {
+        mesh_.triangles.push_back({first, previous, corner});
+      } else if (corners == 0) {
+        first = corner;
+      }
+      previous = corner;
+      ++corners;
+    }
+    if (corners < 3) {
+      fail("face needs at least 3 corners, found " + std::to_string(corners));
+    }
+    ++mesh_.polygon_count;
+    skip_statement();
+  }
+
+  // Reads `a`, `a/b`, `a//c` or `a/b/c`; an empty field after a slash means "absent".
+  ObjCorner read_corner() {
+    const char* start = p_;
+    ObjCorner corner;
+    corner.position = read_index(start, mesh_.positions.size(), "position");
+    if (p_ != end_ && *p_ == '/') {
+      ++p_;
+      if (p_ != end_ && *p_ != '/' && !ends_token(p_)) {
+        corner.uv = read_index(start, mesh_.uvs.size(), "texture coordinate");
+      }
+      if (p_ != end_ && *p_ == '/') {
+        ++p_;
+        if (!ends_token(p_)) corner.normal = read_index(start, mesh_.normals.size(), "normal");
+      }
+    }
+    if (!ends_token(p_)) fail("bad face corner '" + token_at(start) + "'");
+    return corner;
+  }
+
+  // Resolves a 1-based or negative (relative to `count`) OBJ index to a 0-based one.
+  int32_t read_index(const char* corner_start, size_t count, const char* what) {
+    int32_t value = 0;
+    const auto [ptr, ec] = std::from_chars(p_, end_, value);
+    if (ec == std::errc::invalid_argument) fail("bad face corner '" + token_at(corner_start) + "'");
+    if (ec == std::errc::result_out_of_range) {
+      index_out_of_range(std::string(p_, ptr), count, what);
+    }
+    const auto n = static_cast<int64_t>(count);
+    const int64_t resolved = value > 0 ? int64_t{value} - 1 : n + value;
+    if (value == 0) fail("face index 0 is invalid (OBJ indices start at 1)");
+    if (resolved < 0 || resolved >= n || resolved > std::numeric_limits<int32_t>::max()) {
+      index_out_of_range(std::to_string(value), count, what);
+    }
+    p_ = ptr;
+    return static_cast<int32_t>(resolved);
+  }
+
+  [[noreturn]] void index_out_of_range(const std::string& index, size_t count, const char* what) {
+    fail("face index " + index + " out of range (" + std::to_string(count) + " " + what +
+         (count == 1 ? "" : "s") + ")");
+  }
+
+  // The whitespace-delimited token starting at `start`, shortened for messages.
+  std::string token_at(const char* start) const {
+    constexpr size_t kMaxShown = 40;
+    const char* stop = start;
+    while (stop != end_ && !is_blank(*stop) && !is_eol(*stop)) ++stop;
+    const auto length = static_cast<size_t>(stop - start);
+    if (length <= kMaxShown) return std::string(start, length);
+    return std::string(start, kMaxShown) + "...";
+  }
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    constexpr size_t kMaxLine = std::numeric_limits<int>::max();
+    throw SceneError(FileLocation{source_name_, static_cast<int>(std::min(line_, kMaxLine))},
+                     problem);
+  }
+
+  const char* p_;
+  const char* end_;
+  const std::string& source_name_;
+  size_t line_ = 1;
+  ObjMesh mesh_;
+};
+
+}  // namespace
+
+ObjMesh parse_obj(std::string_view text, const std::string& source_name) {
+  return ObjParser(text, source_name).parse();
+}
+
+ObjMesh load_obj(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                             &std::fclose);
+  if (!file) {
+    throw SceneError(FileLocation{name, 0},
+                     std::string("cannot open OBJ file: ") + std::strerror(errno));
+  }
+
+  // Read the whole file with one call when its size is known; grow only if it grew meanwhile.
+  std::error_code size_error;
+  const auto size_hint = std::filesystem::file_size(path, size_error);
+  std::string text(size_error ? size_t{1} << 16 : static_cast<size_t>(size_hint) + 1, '\0');
+  size_t size = 0;
+  while (true) {
+    size += std::fread(text.data() + size, 1, text.size() - size, file.get());
+    if (size < text.size()) break;
+    text.resize(text.size() * 2);
+  }
+  if (std::ferror(file.get())) {
+    throw SceneError(FileLocation{name, 0},
+                     std::string("cannot read OBJ file: ") + std::strerror(errno));
+  }
+  text.resize(size);
+  return parse_obj(text, name);
+}
+
+}  // namespace mjray
