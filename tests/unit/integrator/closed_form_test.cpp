@@ -1,0 +1,157 @@
+// Tiny scenes whose pixel values are known in closed form.
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "mjray/accel/brute_force.h"
+#include "mjray/camera/pinhole_camera.h"
+#include "mjray/render/renderer.h"
+#include "mjray/scene/flatten.h"
+#include "support/scene_builder.h"
+
+namespace mjray {
+namespace {
+
+/// Renders a job with brute force, as the oracle renderer.
+Image render_job(const RenderJob& job) {
+  const World world = flatten(job);
+  const BruteForce accel(world);
+  const WhittedIntegrator integrator(world, accel, {});
+  return render_image(PinholeCamera(job.camera, job.width, job.height), job.width, job.height, integrator, {});
+}
+
+/// A camera straight above the origin looking down, image x along +x and image up along −z.
+RenderJob looking_down(float height, int size, float fovy) {
+  RenderJob job;
+  job.width = job.height = size;
+  job.camera = {{0, height, 0}, {0, -1, 0}, {0, 0, -1}, fovy};
+  return job;
+}
+
+/// Where the ray through pixel centre (i, j) of `looking_down` meets the plane y = 0,
+/// computed from the pinhole model independently of PinholeCamera.
+Point3 floor_point(int i, int j, float height, int size, float fovy) {
+  const double half = std::tan(double(fovy) * std::numbers::pi / 360.0);
+  const double sx = (2 * (i + 0.5) / size - 1) * half, sy = (1 - 2 * (j + 0.5) / size) * half;
+  return {float(sx * height), 0, float(-sy * height)};
+}
+
+TEST(ClosedForm, DiffusePlaneUnderPointLightWithFalloff) {
+  const float camera_height = 10, fovy = 60;
+  const int size = 9;
+  const Color kd(0.6f, 0.5f, 0.4f), ambient(0.1f, 0.2f, 0.05f);
+  const PointLight light{{0.7f, 2, -0.4f}, {0.9f, 1, 0.8f}, {1, 0.5f, 0.25f}};
+  RenderJob job = looking_down(camera_height, size, fovy);
+  job.root = test::mesh(test::floor_quad(100), PhongMaterial{kd, {0, 0, 0}, 10});
+  job.ambient = ambient;
+  job.lights = {light};
+  const Image image = render_job(job);
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i) {
+      // Compute ambient⊙kd + kd·cosθ·I / (c0 + c1·d + c2·d²).
+      const Point3 p = floor_point(i, j, camera_height, size, fovy);
+      const Vector3 to_light = light.position - p;
+      const float d = length(to_light), cos_theta = to_light.y / d;
+      const float att = 1 / (1 + 0.5f * d + 0.25f * d * d);
+      const Color expected = ambient * kd + kd * light.colour * (cos_theta * att);
+      EXPECT_NEAR(image.at(i, j).r, expected.r, 2e-5f) << i << "," << j;
+      EXPECT_NEAR(image.at(i, j).g, expected.g, 2e-5f) << i << "," << j;
+      EXPECT_NEAR(image.at(i, j).b, expected.b, 2e-5f) << i << "," << j;
+    }
+  // The centre pixel looks straight down at the origin: d² = 0.7² + 2² + 0.4².
+  const float d = std::sqrt(0.49f + 4 + 0.16f);
+  EXPECT_NEAR(image.at(4, 4).g, 0.2f * 0.5f + 0.5f * (2 / d) / (1 + 0.5f * d + 0.25f * d * d), 1e-5f);
+}
+
+TEST(ClosedForm, AmbientOnlyIsAmbientTimesKd) {
+  RenderJob job = looking_down(5, 3, 40);
+  job.root = test::mesh(test::floor_quad(100), PhongMaterial{{0.3f, 0.5f, 0.7f}, {1, 1, 1}, 20});
+  job.ambient = {0.5f, 0.4f, 1};
+  job.lights = {PointLight{{0, 3, 0}, {0, 0, 0}, {1, 0, 0}}};
+  const Image image = render_job(job);
+  for (const Color& c : image.pixels()) {
+    EXPECT_FLOAT_EQ(c.r, 0.15f);
+    EXPECT_FLOAT_EQ(c.g, 0.2f);
+    EXPECT_FLOAT_EQ(c.b, 0.7f);
+  }
+}
+
+TEST(ClosedForm, SpecularHighlightSitsAtTheMirrorPoint) {
+  // Eye above x = 0 and light above x = 4 at the same height: the mirror point is x = 2.
+  const float height = 10, fovy = 60;
+  const int size = 101;
+  RenderJob job = looking_down(height, size, fovy);
+  job.root = test::mesh(test::floor_quad(100), PhongMaterial{{0, 0, 0}, {1, 1, 1}, 2000});
+  job.lights = {PointLight{{4, height, 0}, {1, 1, 1}, {1, 0, 0}}};
+  const Image image = render_job(job);
+  int best_i = -1, best_j = -1;
+  float best = -1;
+  for (int j = 0; j < size; ++j)
+    for (int i = 0; i < size; ++i)
+      if (image.at(i, j).r > best) best = image.at(i, j).r, best_i = i, best_j = j;
+  const double half = std::tan(double(fovy) * std::numbers::pi / 360.0);
+  const double expected_i = (2.0 / height / half + 1) * size / 2 - 0.5;  // pixel whose centre sees x = 2
+  EXPECT_NEAR(best_i, expected_i, 0.5);
+  EXPECT_EQ(best_j, size / 2);
+  EXPECT_GT(best, 0.5f);
+}
+
+TEST(ClosedForm, SphereSilhouetteRadiusFollowsFovyAndDistance) {
+  const float radius = 1, distance = 6, fovy = 40;
+  const int size = 401;
+  RenderJob job;
+  job.width = job.height = size;
+  job.camera = {{0, 0, distance}, {0, 0, -1}, {0, 1, 0}, fovy};
+  job.root = test::sphere({0, 0, 0}, radius, PhongMaterial{{1, 0, 0}, {0, 0, 0}, 1});
+  job.ambient = {1, 1, 1};
+  job.lights = {PointLight{{0, 0, 10}, {0, 0, 0}, {1, 0, 0}}};
+  const Image image = render_job(job);
+  // Background pixels have green > 0; the sphere is pure red.
+  int covered = 0;
+  for (int i = 0; i < size; ++i) covered += image.at(i, size / 2).g == 0 ? 1 : 0;
+  const double angular_radius = std::asin(radius / distance);
+  const double expected_px = std::tan(angular_radius) / std::tan(double(fovy) * std::numbers::pi / 360.0) * size;
+  EXPECT_NEAR(covered, expected_px, 2.0);
+}
+
+TEST(ClosedForm, ShadowedPointGetsOnlyAmbient) {
+  RenderJob job = looking_down(10, 5, 20);
+  job.root = test::group({test::mesh(test::floor_quad(100), PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1}),
+                          test::box({-20, 4, -20}, {20, 4.5f, 20})});  // a roof between the light and the floor
+  job.ambient = {0.25f, 0.25f, 0.25f};
+  job.lights = {PointLight{{0, 6, 0}, {1, 1, 1}, {1, 0, 0}}};
+  job.camera.eye = {0, 3, 0};  // below the roof
+  const Image image = render_job(job);
+  for (const Color& c : image.pixels()) EXPECT_FLOAT_EQ(c.r, 0.25f);
+}
+
+TEST(ClosedForm, LightBehindSurfaceAddsNothing) {
+  RenderJob job = looking_down(10, 3, 20);
+  job.root = test::mesh(test::floor_quad(100), PhongMaterial{{1, 1, 1}, {1, 1, 1}, 1});
+  job.ambient = {0, 0, 0};
+  job.lights = {PointLight{{0, -5, 0}, {1, 1, 1}, {1, 0, 0}}};
+  const Image image = render_job(job);
+  for (const Color& c : image.pixels()) EXPECT_EQ(c, Color(0, 0, 0));
+}
+
+TEST(ClosedForm, ImageIsIdenticalForAnyThreadCountAndTileSize) {
+  RenderJob job = looking_down(10, 37, 50);
+  job.root = test::group({test::mesh(test::floor_quad(10), PhongMaterial{{0.8f, 0.6f, 0.2f}, {0.5f, 0.5f, 0.5f}, 30}),
+                          test::sphere({1, 1, 0}, 1), test::box({-3, 0, -1}, {-1, 2, 1})});
+  job.ambient = {0.1f, 0.1f, 0.1f};
+  job.lights = {PointLight{{3, 8, 2}, {1, 1, 1}, {1, 0, 0}}};
+  const World world = flatten(job);
+  const BruteForce accel(world);
+  const WhittedIntegrator integrator(world, accel, {});
+  const PinholeCamera camera(job.camera, job.width, job.height);
+  const Image reference = render_image(camera, 37, 37, integrator, {1, 16});
+  for (const RenderSettings s : {RenderSettings{2, 16}, RenderSettings{3, 5}, RenderSettings{4, 1}}) {
+    const Image other = render_image(camera, 37, 37, integrator, s);
+    EXPECT_EQ(other.pixels(), reference.pixels()) << s.threads << " threads, tile " << s.tile_size;
+  }
+}
+
+}  // namespace
+}  // namespace mjray
