@@ -62,11 +62,11 @@ void render_job(const CommandLine& cl, const RenderJob& job, double parse_second
   const WhittedIntegrator integrator(world, *accel, {cl.max_reflection_depth, cl.max_refraction_depth});
   RenderSettings settings;
   settings.threads = cl.threads;
+  settings.seed = cl.seed;
   RenderStats stats;
   const Image image = render_image(camera, job.width, job.height, integrator, settings, &stats);
 
   const auto path = output_path(cl, job);
-  if (cl.outdir) std::filesystem::create_directories(*cl.outdir);
   write_image(image, path, cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear);
 
   if (!cl.quiet || cl.print_stats) {
@@ -108,6 +108,12 @@ int main(int argc, char** argv) {
     if (cl.output && scene.jobs.size() > 1)
       throw SceneError(cl.scene.string() + ": --output names one file but the scene renders " +
                        std::to_string(scene.jobs.size()) + " images; use --outdir");
+    if (cl.outdir) {
+      // Before rendering, so that a bad folder costs no render time.
+      std::error_code ec;
+      std::filesystem::create_directories(*cl.outdir, ec);
+      if (ec) throw OutputError("cannot create the output folder '" + cl.outdir->string() + "': " + ec.message());
+    }
     for (const RenderJob& job : scene.jobs) render_job(cl, job, parse_seconds);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mjray: error: %s\n", e.what());

@@ -1,17 +1,38 @@
 #include "mjray/integrator/whitted_integrator.h"
 
 #include <cmath>
+#include <numbers>
 
 #include "mjray/integrator/spawn_ray.h"
+#include "mjray/material/optics.h"
 
 namespace mjray {
 
-Color WhittedIntegrator::radiance(const Ray& ray, RayCounters& counters) const {
-  ++counters.primary;
-  return trace(ray, Depth{}, counters);
+namespace {
+
+/// A unit vector in the cone of directions within acos(cos_max) of `axis`, uniform over its
+/// solid angle, from two uniform numbers.
+Vector3 sample_cone(const Vector3& axis, float cos_max, float u1, float u2) {
+  const float cos_theta = 1 - u1 * (1 - cos_max);
+  const float sin_theta = std::sqrt(std::max(0.f, 1 - cos_theta * cos_theta));
+  const float phi = 2 * std::numbers::pi_v<float> * u2;
+  // Compute an orthonormal frame around the axis (Duff et al. 2017).
+  const float sign = std::copysign(1.f, axis.z);
+  const float a = -1 / (sign + axis.z), b = axis.x * axis.y * a;
+  const Vector3 t1(1 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
+  const Vector3 t2(b, sign + axis.y * axis.y * a, -axis.y);
+  return normalize(t1 * (sin_theta * std::cos(phi)) + t2 * (sin_theta * std::sin(phi)) + axis * cos_theta);
 }
 
-Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RayCounters& counters) const {
+}  // namespace
+
+Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const {
+  ++counters.primary;
+  return trace(ray, Depth{}, random, counters);
+}
+
+Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random,
+                               RayCounters& counters) const {
   const auto hit = accel_.intersect(ray, kInfinity);
   if (!hit) return world_.background_radiance(ray.direction);
   const SurfaceInteraction si = world_.interaction(ray, *hit);
@@ -20,7 +41,7 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RayCounters& counter
   const Vector3 wo = normalize(-ray.direction);
   const Normal3 n = face_forward(si.shading_normal, wo);
   return direct_light(si, n, wo, material, counters) +
-         secondary_light(si, n, wo, material, depth, counters);
+         secondary_light(si, n, wo, material, depth, random, counters);
 }
 
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Normal3& n,
@@ -47,10 +68,70 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Normal
   return result;
 }
 
-Color WhittedIntegrator::secondary_light(const SurfaceInteraction&, const Normal3&,
-                                         const Vector3&, const Material&, Depth,
-                                         RayCounters&) const {
-  return {};
+Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
+                                         Depth depth, RandomStream& random,
+                                         RayCounters& counters) const {
+  ++counters.secondary;
+  return trace(spawn_ray(si, direction), depth, random, counters);
+}
+
+template <class ReflectanceFunction>
+Color WhittedIntegrator::dielectric_light(const SurfaceInteraction& si, const Normal3& n,
+                                          const Vector3& wo, float eta_outside, float eta_inside,
+                                          ReflectanceFunction kr_of_cosine, Depth depth,
+                                          RandomStream& random, RayCounters& counters) const {
+  // Entering or leaving is decided by the geometric normal, which points out of the object.
+  const bool entering = dot(wo, si.geometric_normal) > 0;
+  const float eta_i = entering ? eta_outside : eta_inside;
+  const float eta_t = entering ? eta_inside : eta_outside;
+  const float cos_i = dot(wo, n);
+  float kr = kr_of_cosine(cos_i, eta_i, eta_t);
+  const auto transmitted = refract(wo, n, eta_i / eta_t);
+  if (!transmitted) kr = 1;  // total internal reflection: the refracted share reflects
+  Color result;
+  if (kr > 0 && depth.reflection < settings_.max_reflection_depth)
+    result += kr * trace_secondary(si, reflect(wo, n), {depth.reflection + 1, depth.refraction}, random, counters);
+  if (kr < 1 && depth.refraction < settings_.max_refraction_depth)
+    result += (1 - kr) * trace_secondary(si, *transmitted, {depth.reflection, depth.refraction + 1}, random, counters);
+  return result;
+}
+
+Color WhittedIntegrator::secondary_light(const SurfaceInteraction& si, const Normal3& n,
+                                         const Vector3& wo, const Material& material, Depth depth,
+                                         RandomStream& random, RayCounters& counters) const {
+  const Depth reflected{depth.reflection + 1, depth.refraction};
+  const bool may_reflect = depth.reflection < settings_.max_reflection_depth;
+  if (const auto* m = std::get_if<ReflectiveMaterial>(&material)) {
+    if (!may_reflect || m->reflectivity <= 0) return {};
+    return m->reflectivity * trace_secondary(si, reflect(wo, n), reflected, random, counters);
+  }
+  if (const auto* m = std::get_if<RefractiveMaterial>(&material)) {
+    const float kr = m->reflectivity;
+    return dielectric_light(si, n, wo, m->eta_outside, m->eta_inside,
+                            [kr](float, float, float) { return kr; }, depth, random, counters);
+  }
+  if (const auto* m = std::get_if<FresnelMaterial>(&material)) {
+    return dielectric_light(si, n, wo, m->eta_outside, m->eta_inside, fresnel_dielectric, depth, random, counters);
+  }
+  if (const auto* m = std::get_if<GlossyMaterial>(&material)) {
+    if (!may_reflect || m->reflectivity <= 0) return {};
+    const Vector3 mirror = reflect(wo, n);
+    // Blur only the first reflection (as the original): deeper ones are plain mirrors.
+    if (depth.reflection > 0 || m->samples <= 1)
+      return m->reflectivity * trace_secondary(si, mirror, reflected, random, counters);
+    Color sum;
+    const float cos_max = m->cos_cone_angle();
+    for (int k = 0; k < m->samples; ++k) {
+      // Stratify u1 into `samples` strata; pair them with a jittered golden-ratio sequence.
+      const float u1 = (float(k) + random.uniform()) / float(m->samples);
+      const float u2 = std::fmod(float(k) * 0.618033988749895f + random.uniform() / float(m->samples), 1.f);
+      Vector3 d = sample_cone(mirror, cos_max, u1, u2);
+      if (dot(d, si.geometric_normal) * dot(wo, si.geometric_normal) <= 0) d = mirror;  // below the surface
+      sum += trace_secondary(si, d, reflected, random, counters);
+    }
+    return m->reflectivity * sum / float(m->samples);
+  }
+  return {};  // PhongMaterial: local shading only
 }
 
 }  // namespace mjray

@@ -5,6 +5,7 @@
 
 #include "mjray/accel/accelerator.h"
 #include "mjray/core/color.h"
+#include "mjray/core/rng.h"
 #include "mjray/core/ray.h"
 #include "mjray/scene/world.h"
 
@@ -37,8 +38,8 @@ class WhittedIntegrator {
   WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings)
       : world_(world), accel_(accel), settings_(settings) {}
 
-  /// The colour along a primary ray (direction unit length).
-  Color radiance(const Ray& ray, RayCounters& counters) const;
+  /// The colour along a primary ray (direction unit length); `random` supplies every sample.
+  Color radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const;
 
  private:
   struct Depth {
@@ -46,14 +47,24 @@ class WhittedIntegrator {
     int refraction = 0;
   };
 
-  Color trace(const Ray& ray, Depth depth, RayCounters& counters) const;
+  Color trace(const Ray& ray, Depth depth, RandomStream& random, RayCounters& counters) const;
   /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
   Color direct_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
                      const Material& material, RayCounters& counters) const;
   /// Light arriving by reflection and refraction: the hook that the materials of the
   /// original project's extensions plug into. Plain Phong materials add nothing.
   Color secondary_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
-                        const Material& material, Depth depth, RayCounters& counters) const;
+                        const Material& material, Depth depth, RandomStream& random,
+                        RayCounters& counters) const;
+  /// Kr · reflected + Kt · refracted for a dielectric boundary; kr_of_cosine gives Kr from the
+  /// cosine of the incident angle and the two indices (constant, or Fresnel).
+  template <class ReflectanceFunction>
+  Color dielectric_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
+                         float eta_outside, float eta_inside, ReflectanceFunction kr_of_cosine,
+                         Depth depth, RandomStream& random, RayCounters& counters) const;
+  /// The light arriving along a secondary ray leaving si.
+  Color trace_secondary(const SurfaceInteraction& si, const Vector3& direction, Depth depth,
+                        RandomStream& random, RayCounters& counters) const;
 
   const World& world_;
   const Accelerator& accel_;

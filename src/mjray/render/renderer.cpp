@@ -32,8 +32,10 @@ Image render_image(const PinholeCamera& camera, int width, int height,
       const int x0 = (t % tiles_x) * tile, y0 = (t / tiles_x) * tile;
       const int x1 = std::min(width, x0 + tile), y1 = std::min(height, y0 + tile);
       for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x)
-          image.at(x, y) = integrator.radiance(camera.generate_ray(x + 0.5f, y + 0.5f), mine);
+        for (int x = x0; x < x1; ++x) {
+          RandomStream random(settings.seed, uint64_t(y) * uint64_t(width) + uint64_t(x), 0);
+          image.at(x, y) = integrator.radiance(camera.generate_ray(x + 0.5f, y + 0.5f), random, mine);
+        }
     }
   };
   std::vector<std::thread> pool;

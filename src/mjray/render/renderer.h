@@ -1,6 +1,7 @@
 #pragma once
 /// Renders an image over tiles on all cores; every pixel is independent of thread and order.
 
+#include <cstdint>
 #include <functional>
 
 #include "mjray/camera/pinhole_camera.h"
@@ -13,6 +14,7 @@ namespace mjray {
 struct RenderSettings {
   int threads = 0;     ///< 0 = all cores
   int tile_size = 16;  ///< pixels per tile side
+  uint64_t seed = 0;   ///< --seed: keys every random number
 };
 
 /// What the render did.
