@@ -1,7 +1,11 @@
 // The CS 488 `gr.*` scene API: node constructors, node methods, materials, lights and
 // gr.render, which snapshots the node graph into a RenderJob.
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <map>
 #include <new>
 #include <set>
@@ -12,6 +16,7 @@ extern "C" {
 #include <lua.h>
 }
 
+#include "mjray/camera/pinhole_camera.h"
 #include "mjray/io/obj_loader.h"
 #include "mjray/io/path_resolver.h"
 #include "mjray/lua/lua_context.h"
@@ -48,45 +53,96 @@ int collect_shared(lua_State* L) {
 
 // --- argument readers (throw ArgumentError; `guarded` adds the caller's file:line) --------
 
+/// How the value at `index` reads in a message: "nothing", "nil", "a number", "the string 'x'",
+/// "an empty table", "a table of 2 values", "a gr.light".
 std::string describe(lua_State* L, int index) {
-  const int type = lua_type(L, index);
-  if (type == LUA_TTABLE) return "a table of " + std::to_string(lua_rawlen(L, index)) + " values";
-  if (type == LUA_TNONE) return "nothing";
-  return std::string("a ") + lua_typename(L, type);
+  index = lua_absindex(L, index);
+  switch (lua_type(L, index)) {
+    case LUA_TNONE:
+      return "nothing";
+    case LUA_TNIL:
+      return "nil";
+    case LUA_TSTRING: {
+      constexpr size_t kMaxShown = 40;
+      size_t length = 0;
+      const char* text = lua_tolstring(L, index, &length);
+      if (length == 0) return "an empty string";
+      return "the string '" + std::string(text, std::min(length, kMaxShown)) + (length > kMaxShown ? "...'" : "'");
+    }
+    case LUA_TTABLE: {
+      const auto count = lua_rawlen(L, index);
+      if (count == 1) return "a table of 1 value";
+      if (count > 1) return "a table of " + std::to_string(count) + " values";
+      lua_pushnil(L);
+      if (lua_next(L, index) == 0) return "an empty table";
+      lua_pop(L, 2);
+      return "a table without list entries";
+    }
+    case LUA_TUSERDATA: {
+      // Our userdata types carry __name ("gr.node", "gr.material", "gr.light").
+      std::string name = "userdata";
+      if (const int type = luaL_getmetafield(L, index, "__name"); type != LUA_TNIL) {
+        if (type == LUA_TSTRING) name = lua_tostring(L, -1);
+        lua_pop(L, 1);
+      }
+      return "a " + name;
+    }
+    default:
+      return std::string("a ") + lua_typename(L, lua_type(L, index));
+  }
 }
 
+/// Methods ("node:translate") number their arguments after self, as the script writes them.
 [[noreturn]] void bad_argument(lua_State* L, const char* fn, int index, const char* what,
                                const char* expected) {
-  throw ArgumentError(std::string(fn) + ": argument " + std::to_string(index) + " (" + what +
+  const bool method = std::strchr(fn, ':') != nullptr;
+  if (method && index == 1)
+    throw ArgumentError(std::string(fn) + ": must be called on a node (with ':'), got " + describe(L, index));
+  throw ArgumentError(std::string(fn) + ": argument " + std::to_string(method ? index - 1 : index) + " (" + what +
                       ") must be " + expected + ", got " + describe(L, index));
 }
 
+/// A string; numbers are accepted and converted, as luaL_checkstring does in the course binding.
 std::string arg_string(lua_State* L, int index, const char* fn, const char* what) {
-  if (lua_type(L, index) != LUA_TSTRING) bad_argument(L, fn, index, what, "a string");
+  const int type = lua_type(L, index);
+  if (type != LUA_TSTRING && type != LUA_TNUMBER) bad_argument(L, fn, index, what, "a string");
   size_t length = 0;
   const char* text = lua_tolstring(L, index, &length);
   return std::string(text, length);
 }
 
+/// A finite number; numeric strings are accepted, as luaL_checknumber does in the course binding.
 double arg_number(lua_State* L, int index, const char* fn, const char* what) {
-  if (lua_type(L, index) != LUA_TNUMBER) bad_argument(L, fn, index, what, "a number");
-  const double value = lua_tonumber(L, index);
+  int is_number = 0;
+  const double value = lua_tonumberx(L, index, &is_number);
+  if (!is_number) bad_argument(L, fn, index, what, "a number");
   if (!std::isfinite(value)) bad_argument(L, fn, index, what, "a finite number");
   return value;
 }
 
-/// A {x, y, z} table: exactly 3 finite numbers.
-std::array<double, 3> arg_tuple3(lua_State* L, int index, const char* fn, const char* what) {
-  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 3)
-    bad_argument(L, fn, index, what, "a table of 3 numbers");
-  std::array<double, 3> out{};
+/// Reads the {x, y, z} table at `index` (exactly 3 finite numbers) into `out`; returns "" or
+/// what was found instead ("got ...").
+std::string read_tuple3(lua_State* L, int index, std::array<double, 3>& out) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) != LUA_TTABLE || lua_rawlen(L, index) != 3) return "got " + describe(L, index);
   for (int i = 0; i < 3; ++i) {
-    const bool is_number = lua_rawgeti(L, index, i + 1) == LUA_TNUMBER;
-    out[size_t(i)] = lua_tonumber(L, -1);
+    lua_rawgeti(L, index, i + 1);
+    int is_number = 0;
+    out[size_t(i)] = lua_tonumberx(L, -1, &is_number);
+    std::string problem;
+    if (!is_number) problem = describe(L, -1);
+    else if (!std::isfinite(out[size_t(i)])) problem = "not finite";
     lua_pop(L, 1);
-    if (!is_number || !std::isfinite(out[size_t(i)]))
-      bad_argument(L, fn, index, what, "a table of 3 finite numbers");
+    if (!problem.empty()) return "got a table whose entry " + std::to_string(i + 1) + " is " + problem;
   }
+  return "";
+}
+
+std::array<double, 3> arg_tuple3(lua_State* L, int index, const char* fn, const char* what) {
+  std::array<double, 3> out{};
+  if (const std::string problem = read_tuple3(L, index, out); !problem.empty())
+    throw ArgumentError(std::string(fn) + ": argument " + std::to_string(index) + " (" + what +
+                        ") must be a table of 3 numbers, " + problem);
   return out;
 }
 
@@ -109,6 +165,13 @@ std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, cons
   return *node;
 }
 
+/// A number as a person writes it: "0", "2.5", "180".
+std::string format_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", value);
+  return buffer;
+}
+
 // --- node constructors ---------------------------------------------------------------------
 
 int new_node(lua_State* L, const char* fn, NodeShape shape, Transform node_from_object = {}) {
@@ -117,6 +180,7 @@ int new_node(lua_State* L, const char* fn, NodeShape shape, Transform node_from_
   node->where = caller_location(L);
   node->shape = shape;
   node->node_from_object = node_from_object;
+  context(L).nodes.push_back(node);
   push_shared(L, std::move(node), kNodeType);
   return 1;
 }
@@ -146,36 +210,36 @@ std::shared_ptr<const ObjMesh> table_mesh(lua_State* L, const char* fn) {
   const auto vertex_count = lua_Integer(lua_rawlen(L, 2));
   for (lua_Integer i = 1; i <= vertex_count; ++i) {
     lua_rawgeti(L, 2, i);
-    const int top = lua_gettop(L);
-    if (lua_type(L, top) != LUA_TTABLE || lua_rawlen(L, top) != 3) {
-      lua_pop(L, 1);
-      throw ArgumentError(std::string(fn) + ": vertex " + std::to_string(i) + " must be a table of 3 numbers");
-    }
-    mesh->positions.push_back(arg_point(L, top, fn, "vertex"));
+    std::array<double, 3> p{};
+    if (const std::string problem = read_tuple3(L, -1, p); !problem.empty())
+      throw ArgumentError(std::string(fn) + ": vertex " + std::to_string(i) + " must be a table of 3 numbers, " + problem);
     lua_pop(L, 1);
+    mesh->positions.push_back({float(p[0]), float(p[1]), float(p[2])});
   }
   const auto face_count = lua_Integer(lua_rawlen(L, 3));
+  std::vector<int32_t> index;
   for (lua_Integer f = 1; f <= face_count; ++f) {
     lua_rawgeti(L, 3, f);
-    const int top = lua_gettop(L);
-    const auto corners = lua_type(L, top) == LUA_TTABLE ? lua_Integer(lua_rawlen(L, top)) : 0;
-    std::vector<int32_t> index;
+    const int face = lua_gettop(L);
+    if (lua_type(L, face) != LUA_TTABLE || lua_rawlen(L, face) < 3)
+      throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) +
+                          " must be a table of at least 3 vertex indices, got " + describe(L, face));
+    const auto corners = lua_Integer(lua_rawlen(L, face));
+    index.clear();
     for (lua_Integer c = 1; c <= corners; ++c) {
-      lua_rawgeti(L, top, c);
+      lua_rawgeti(L, face, c);
       int is_integer = 0;
       const lua_Integer value = lua_tointegerx(L, -1, &is_integer);
+      if (!is_integer)
+        throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) + " entry " + std::to_string(c) +
+                            " must be a whole number (a 0-based vertex index), got " + describe(L, -1));
       lua_pop(L, 1);
-      if (!is_integer || value < 0 || value >= vertex_count) {
-        lua_pop(L, 1);
-        throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) + " has index " +
-                            (is_integer ? std::to_string(value) : std::string("that is not an integer")) +
+      if (value < 0 || value >= vertex_count)
+        throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) + " has index " + std::to_string(value) +
                             " outside 0.." + std::to_string(vertex_count - 1));
-      }
       index.push_back(int32_t(value));
     }
     lua_pop(L, 1);
-    if (index.size() < 3)
-      throw ArgumentError(std::string(fn) + ": face " + std::to_string(f) + " has fewer than 3 vertices");
     // Fan-triangulate the convex polygon.
     for (size_t k = 2; k < index.size(); ++k)
       mesh->triangles.push_back({ObjCorner{index[0]}, ObjCorner{index[k - 1]}, ObjCorner{index[k]}});
@@ -189,10 +253,15 @@ std::shared_ptr<const ObjMesh> table_mesh(lua_State* L, const char* fn) {
 std::shared_ptr<const ObjMesh> file_mesh(lua_State* L, const std::string& name, const char* fn) {
   LoaderContext& ctx = context(L);
   const auto path = resolve_input(name, ctx.script_dir);
-  if (!path) throw ArgumentError(std::string(fn) + ": cannot find mesh file '" + name + "'");
+  if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
   const auto key = std::filesystem::weakly_canonical(*path);
   auto& cached = ctx.mesh_cache[key];
-  if (!cached) cached = std::make_shared<ObjMesh>(load_obj(*path));
+  try {
+    if (!cached) cached = std::make_shared<ObjMesh>(load_obj(*path));
+  } catch (const SceneError& e) {
+    // "OBJFILE:LINE: problem" becomes "scene.lua:LINE: gr.mesh: OBJFILE:LINE: problem".
+    throw ArgumentError(std::string(fn) + ": " + e.what());
+  }
   return cached;
 }
 
@@ -201,7 +270,8 @@ int gr_mesh(lua_State* L) {
   std::shared_ptr<const ObjMesh> mesh;
   if (lua_type(L, 2) == LUA_TSTRING) {
     mesh = file_mesh(L, lua_tostring(L, 2), fn);
-  } else if (lua_type(L, 2) == LUA_TTABLE && lua_type(L, 3) == LUA_TTABLE) {
+  } else if (lua_type(L, 2) == LUA_TTABLE) {
+    if (lua_type(L, 3) != LUA_TTABLE) bad_argument(L, fn, 3, "faces", "a table of faces");
     mesh = table_mesh(L, fn);
     context(L).saw_table_mesh = true;
   } else {
@@ -215,45 +285,45 @@ int gr_mesh(lua_State* L) {
 // --- node methods --------------------------------------------------------------------------
 
 int node_add_child(lua_State* L) {
-  auto& parent = arg_node(L, 1, "add_child", "self");
-  auto& child = arg_node(L, 2, "add_child", "child");
+  auto& parent = arg_node(L, 1, "node:add_child", "self");
+  auto& child = arg_node(L, 2, "node:add_child", "child");
   parent->children.push_back(child);
   return 0;
 }
 
 int node_set_material(lua_State* L) {
-  auto& node = arg_node(L, 1, "set_material", "self");
+  auto& node = arg_node(L, 1, "node:set_material", "self");
   auto* material = test_shared<Material>(L, 2, kMaterialType);
-  if (!material) bad_argument(L, "set_material", 2, "material", "a material");
+  if (!material) bad_argument(L, "node:set_material", 2, "material", "a material");
   node->material = *material;
   return 0;
 }
 
 int node_translate(lua_State* L) {
-  auto& node = arg_node(L, 1, "translate", "self");
-  const Vector3 d(float(arg_number(L, 2, "translate", "x")), float(arg_number(L, 3, "translate", "y")),
-                  float(arg_number(L, 4, "translate", "z")));
+  auto& node = arg_node(L, 1, "node:translate", "self");
+  const Vector3 d(float(arg_number(L, 2, "node:translate", "x")), float(arg_number(L, 3, "node:translate", "y")),
+                  float(arg_number(L, 4, "node:translate", "z")));
   node->transform_calls.push_back(Transform::translate(d));
   return 0;
 }
 
 int node_scale(lua_State* L) {
-  auto& node = arg_node(L, 1, "scale", "self");
-  const auto x = float(arg_number(L, 2, "scale", "x")), y = float(arg_number(L, 3, "scale", "y")),
-             z = float(arg_number(L, 4, "scale", "z"));
-  if (x == 0 || y == 0 || z == 0) throw ArgumentError("scale: a scale factor of 0 flattens the node to nothing");
+  auto& node = arg_node(L, 1, "node:scale", "self");
+  const auto x = float(arg_number(L, 2, "node:scale", "x")), y = float(arg_number(L, 3, "node:scale", "y")),
+             z = float(arg_number(L, 4, "node:scale", "z"));
+  if (x == 0 || y == 0 || z == 0) throw ArgumentError("node:scale: a scale factor of 0 flattens the node to nothing");
   node->transform_calls.push_back(Transform::scale(x, y, z));
   return 0;
 }
 
 int node_rotate(lua_State* L) {
-  auto& node = arg_node(L, 1, "rotate", "self");
-  const std::string axis = arg_string(L, 2, "rotate", "axis");
-  const auto degrees = float(arg_number(L, 3, "rotate", "angle"));
+  auto& node = arg_node(L, 1, "node:rotate", "self");
+  const std::string axis = arg_string(L, 2, "node:rotate", "axis");
+  const auto degrees = float(arg_number(L, 3, "node:rotate", "angle"));
   const std::string axes = "xyzXYZ";
   const auto at = axes.find(axis);
   if (axis.size() != 1 || at == std::string::npos)
-    throw ArgumentError("rotate: axis must be 'x', 'y' or 'z', got '" + axis + "'");
+    throw ArgumentError("node:rotate: axis must be 'x', 'y' or 'z', got '" + axis + "'");
   node->transform_calls.push_back(Transform::rotate(int(at % 3), degrees));
   return 0;
 }
@@ -284,13 +354,19 @@ int gr_light(lua_State* L) {
 /// chosen rule and keeping shared children shared.
 class Snapshot {
  public:
+  /// Deeper graphs are refused: copying and flattening recurse once per level.
+  static constexpr int kMaxDepth = 1000;
+
   explicit Snapshot(bool post_multiply) : post_multiply_(post_multiply) {}
 
-  std::shared_ptr<const SceneNode> copy(const std::shared_ptr<LuaNode>& live) {
+  std::shared_ptr<const SceneNode> copy(const std::shared_ptr<LuaNode>& live, int depth = 0) {
     if (auto it = done_.find(live.get()); it != done_.end()) return it->second;
     if (!in_progress_.insert(live.get()).second)
-      throw ArgumentError("node '" + live->name + "' (created at " + live->where.to_string() +
+      throw ArgumentError("gr.render: node '" + live->name + "' (created at " + live->where.to_string() +
                           ") is its own ancestor: the scene graph has a cycle");
+    if (depth >= kMaxDepth)
+      throw ArgumentError("gr.render: the scene graph is nested deeper than " + std::to_string(kMaxDepth) +
+                          " levels (at node '" + live->name + "', created at " + live->where.to_string() + ")");
     auto node = std::make_shared<SceneNode>();
     node->name = live->name;
     node->where = live->where;
@@ -300,7 +376,7 @@ class Snapshot {
     node->material = live->material;
     for (const Transform& call : live->transform_calls)
       node->parent_from_node = post_multiply_ ? node->parent_from_node * call : call * node->parent_from_node;
-    for (const auto& child : live->children) node->children.push_back(copy(child));
+    for (const auto& child : live->children) node->children.push_back(copy(child, depth + 1));
     in_progress_.erase(live.get());
     done_[live.get()] = node;
     return node;
@@ -312,6 +388,24 @@ class Snapshot {
   std::set<const LuaNode*> in_progress_;
 };
 
+/// Checks the camera here so that the error names the gr.render line; the tests mirror
+/// PinholeCamera's, which stays the final word.
+void check_camera(const RenderJob& job) {
+  const CameraDescription& c = job.camera;
+  if (!(length(c.view) > 0)) throw ArgumentError("gr.render: the view direction is zero");
+  if (!(c.fovy_degrees > 0 && c.fovy_degrees < 180))
+    throw ArgumentError("gr.render: fovy must be between 0 and 180 degrees, got " + format_number(c.fovy_degrees));
+  const Vector3 forward = normalize(c.view);
+  const Vector3 up_ortho = c.up - forward * dot(c.up, forward);
+  if (!(length(up_ortho) > 1e-6f * length(c.up)))
+    throw ArgumentError("gr.render: the up vector is parallel to the view direction");
+  try {
+    PinholeCamera(c, job.width, job.height);
+  } catch (const SceneError& e) {
+    throw ArgumentError(std::string("gr.render: ") + e.what());
+  }
+}
+
 int gr_render(lua_State* L) {
   const char* fn = "gr.render";
   LoaderContext& ctx = context(L);
@@ -319,11 +413,12 @@ int gr_render(lua_State* L) {
   job.where = caller_location(L);
   auto& root = arg_node(L, 1, fn, "root node");
   job.output = arg_string(L, 2, fn, "output file");
+  if (job.output.empty()) bad_argument(L, fn, 2, "output file", "a file name");
   const double width = arg_number(L, 3, fn, "width"), height = arg_number(L, 4, fn, "height");
   if (width < 1 || height < 1 || width != std::floor(width) || height != std::floor(height) ||
       width > 65536 || height > 65536)
     throw ArgumentError("gr.render: width and height must be whole numbers from 1 to 65536, got " +
-                        std::to_string(width) + " x " + std::to_string(height));
+                        format_number(width) + " x " + format_number(height));
   job.width = int(width);
   job.height = int(height);
   job.camera.eye = arg_point(L, 5, fn, "eye");
@@ -337,14 +432,12 @@ int gr_render(lua_State* L) {
   for (lua_Integer i = 1; i <= light_count; ++i) {
     lua_rawgeti(L, 10, i);
     auto* light = test_shared<Light>(L, -1, kLightType);
+    if (!light)
+      throw ArgumentError("gr.render: lights entry " + std::to_string(i) + " must be a light, got " + describe(L, -1));
     lua_pop(L, 1);
-    if (!light) throw ArgumentError("gr.render: lights entry " + std::to_string(i) + " is not a light");
     job.lights.push_back(**light);
   }
-  // Check the camera now so the error points at this line.
-  if (!(length(job.camera.view) > 0)) throw ArgumentError("gr.render: the view direction is zero");
-  if (!(job.camera.fovy_degrees > 0 && job.camera.fovy_degrees < 180))
-    throw ArgumentError("gr.render: fovy must be between 0 and 180 degrees");
+  check_camera(job);
 
   bool post = ctx.options.transform_order == TransformOrder::kPost;
   if (ctx.options.transform_order == TransformOrder::kAuto) post = ctx.saw_table_mesh;

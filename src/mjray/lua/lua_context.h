@@ -26,6 +26,13 @@ struct LuaNode {
   std::shared_ptr<Material> material;
   std::vector<Transform> transform_calls;  ///< in call order
   std::vector<std::shared_ptr<LuaNode>> children;
+
+  LuaNode() = default;
+  LuaNode(const LuaNode&) = delete;
+  LuaNode& operator=(const LuaNode&) = delete;
+  /// Frees a long chain of sole-owned children iteratively: a script can build one deeper
+  /// than the C++ stack.
+  ~LuaNode();
 };
 
 /// Everything the bindings need to know about the running script.
@@ -36,6 +43,13 @@ struct LoaderContext {
   bool saw_table_mesh = false;  ///< decides the automatic transform order
   SceneDescription* description = nullptr;
   std::map<std::filesystem::path, std::shared_ptr<const ObjMesh>> mesh_cache;
+  std::vector<std::weak_ptr<LuaNode>> nodes;  ///< every node made, to break cycles at the end
+
+  LoaderContext() = default;
+  LoaderContext(const LoaderContext&) = delete;
+  LoaderContext& operator=(const LoaderContext&) = delete;
+  /// Empties the child lists of nodes still alive, so that a script's cycles do not leak.
+  ~LoaderContext();
 };
 
 /// The context of the script running in L.
@@ -51,14 +65,20 @@ void install_compatibility(lua_State* L);
 /// Replaces every standard function that could run programs, write files, load native code
 /// or read outside the scene's folders with one that refuses, naming itself.
 void install_sandbox(lua_State* L);
-/// Wraps io.open/io.lines so relative names resolve like every other scene path.
+/// Wraps io.open/io.lines/io.input/dofile/loadfile so relative names resolve like every other
+/// scene path (writes, os.remove and os.rename: beside the script), and forces loadfile to text.
 void install_path_resolution(lua_State* L);
 
 /// "file:line" of the Lua code that called the running C function.
 FileLocation caller_location(lua_State* L);
 
+/// "cannot find 'name' (looked in ...)": the message for a relative input found nowhere.
+std::string not_found_message(const std::string& name);
+
 /// A C function that reports C++ exceptions as Lua errors at the caller's line (the
-/// exception is gone before lua_error unwinds, so no C++ destructor is skipped).
+/// exception is gone before lua_error unwinds, so no C++ destructor is skipped). F itself must
+/// report problems by throwing: a luaL_error/luaL_check* inside F would longjmp over F's
+/// C++ locals.
 template <int (*F)(lua_State*)>
 int guarded(lua_State* L) {
   try {

@@ -59,6 +59,13 @@ std::filesystem::path resolve_script_path(const LoaderContext& ctx, const std::s
   return path.is_absolute() ? path : ctx.script_dir / path;
 }
 
+/// Where a file the script writes, removes or renames lives: relative names are beside the
+/// script, like the images it renders.
+std::filesystem::path write_path(const LoaderContext& ctx, const std::string& name) {
+  const std::filesystem::path path(name);
+  return path.is_absolute() ? path : ctx.script_dir / path;
+}
+
 /// Checks that a sandboxed script may read `name`; returns the resolved path.
 std::string checked_read_path(lua_State* L, const char* fn, const std::string& name) {
   const LoaderContext& ctx = context(L);
@@ -70,8 +77,9 @@ std::string checked_read_path(lua_State* L, const char* fn, const std::string& n
 
 // --- refusing functions --------------------------------------------------------------------
 
+/// Upvalue 1 names the refused function ("os.execute").
 int refuse(lua_State* L) {
-  return luaL_error(L, "%s is not allowed: %s", lua_tostring(L, lua_upvalueindex(1)), kUnsafeHint);
+  throw ArgumentError(std::string(lua_tostring(L, lua_upvalueindex(1))) + " is not allowed: " + kUnsafeHint);
 }
 
 void replace_with_refusal(lua_State* L, const char* table, const char* field) {
@@ -81,29 +89,49 @@ void replace_with_refusal(lua_State* L, const char* table, const char* field) {
     return;
   }
   lua_pushfstring(L, "%s.%s", table, field);
-  lua_pushcclosure(L, refuse, 1);
+  lua_pushcclosure(L, guarded<refuse>, 1);
   lua_setfield(L, -2, field);
   lua_pop(L, 1);
 }
 
 // --- wrappers around io.open / io.lines / io.input / dofile / loadfile / load --------------
-// Each keeps the original function as upvalue 1 and calls it with a checked path.
+// Each keeps the original function as upvalue 1 and calls it with a checked path. Checks
+// report by throwing (see `guarded`), so they never use luaL_check*.
+
+/// Message handler of call_original: an error the original raises itself has no location
+/// (its caller is C), so it gets the script's line. Upvalue 1 is the original.
+int locate_original_error(lua_State* L) {
+  lua_Debug ar;
+  if (lua_type(L, 1) != LUA_TSTRING || !lua_getstack(L, 1, &ar)) return 1;
+  lua_getinfo(L, "f", &ar);
+  const bool raised_by_original = lua_rawequal(L, -1, lua_upvalueindex(1));
+  lua_pop(L, 1);
+  if (!raised_by_original) return 1;  // from Lua code the original ran: already located
+  const std::string message = caller_location(L).to_string() + ": " + lua_tostring(L, 1);
+  lua_pushstring(L, message.c_str());
+  return 1;
+}
 
 int call_original(lua_State* L) {
+  const int arguments = lua_gettop(L);
   lua_pushvalue(L, lua_upvalueindex(1));
+  lua_pushcclosure(L, locate_original_error, 1);
   lua_insert(L, 1);
-  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
-  return lua_gettop(L);
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 2);
+  if (lua_pcall(L, arguments, LUA_MULTRET, 1) != LUA_OK) return lua_error(L);
+  return lua_gettop(L) - 1;
 }
 
 int open_checked(lua_State* L) {
-  const std::string name = luaL_checkstring(L, 1);
-  const char* mode = luaL_optstring(L, 2, "r");
+  if (lua_type(L, 1) != LUA_TSTRING) return 0;  // the original reports bad arguments
+  // A non-string mode is refused by the original, so "r" here opens nothing it would not.
+  const char* mode = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "r";
   const bool writes = std::strpbrk(mode, "wa+") != nullptr;
   if (writes && !context(L).options.unsafe_lua)
     throw ArgumentError(std::string("io.open for writing ('") + mode + "') is not allowed: " + kUnsafeHint);
-  const std::string path = writes ? resolve_script_path(context(L), name).string()
-                                  : checked_read_path(L, "io.open", name);
+  const std::string name = lua_tostring(L, 1);
+  const std::string path = writes ? write_path(context(L), name).string() : checked_read_path(L, "io.open", name);
   lua_pushstring(L, path.c_str());
   lua_replace(L, 1);
   return 0;
@@ -114,11 +142,14 @@ int io_open(lua_State* L) {
   return call_original(L);
 }
 
-template <const char* kName>
+/// Resolves and checks a file-name argument 1; kStdin: without a name the function would
+/// read standard input, which a sandboxed script may not.
+template <const char* kName, bool kStdin>
 int path_checked(lua_State* L) {
   if (lua_type(L, 1) != LUA_TSTRING) {
-    if (lua_isnoneornil(L, 1) && !context(L).options.unsafe_lua && std::strcmp(kName, "io.lines") != 0)
-      throw ArgumentError(std::string(kName) + " without a file name reads standard input, which is not allowed: " + kUnsafeHint);
+    if (kStdin && lua_isnoneornil(L, 1) && !context(L).options.unsafe_lua)
+      throw ArgumentError(std::string(kName) + " without a file name reads standard input, which is not allowed: " +
+                          kUnsafeHint);
     return 0;
   }
   const std::string path = checked_read_path(L, kName, lua_tostring(L, 1));
@@ -132,30 +163,61 @@ constexpr char kIoInput[] = "io.input";
 constexpr char kDofile[] = "dofile";
 constexpr char kLoadfile[] = "loadfile";
 
-template <const char* kName>
+template <const char* kName, bool kStdin>
 int path_wrapper(lua_State* L) {
-  guarded<path_checked<kName>>(L);
+  guarded<path_checked<kName, kStdin>>(L);
   return call_original(L);
 }
 
+/// loadfile(name, mode, env) with mode forced to text: binary chunks can crash the VM.
 int loadfile_text_only(lua_State* L) {
-  guarded<path_checked<kLoadfile>>(L);
-  lua_settop(L, std::max(lua_gettop(L), 3));
-  lua_pushstring(L, "t");  // binary chunks can crash the VM
+  guarded<path_checked<kLoadfile, true>>(L);
+  // Pad only up to the mode: an absent env must stay absent (nil would be an empty _ENV).
+  lua_settop(L, std::max(lua_gettop(L), 2));
+  lua_pushstring(L, "t");
   lua_replace(L, 2);
   return call_original(L);
 }
 
+int load_checked(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TSTRING && lua_tostring(L, 1)[0] == LUA_SIGNATURE[0])
+    throw ArgumentError(std::string("load of a precompiled (binary) chunk is not allowed: ") + kUnsafeHint);
+  return 0;
+}
+
+/// load(chunk, chunkname, mode, env) with mode forced to text.
 int load_text_only(lua_State* L) {
-  lua_settop(L, std::max(lua_gettop(L), 4));
+  guarded<load_checked>(L);
+  lua_settop(L, std::max(lua_gettop(L), 3));
   lua_pushstring(L, "t");
   lua_replace(L, 3);
   return call_original(L);
 }
 
-int io_output_checked(lua_State* L) {
+/// os.remove(name) / os.rename(from, to) (unsafe only): names resolve like io.open's writes.
+int file_names_resolved(lua_State* L) {
+  for (int index = 1; index <= std::min(lua_gettop(L), 2); ++index) {
+    if (lua_type(L, index) != LUA_TSTRING) continue;
+    const std::string path = write_path(context(L), lua_tostring(L, index)).string();
+    lua_pushstring(L, path.c_str());
+    lua_replace(L, index);
+  }
+  return 0;
+}
+
+int os_file_operation(lua_State* L) {
+  guarded<file_names_resolved>(L);
+  return call_original(L);
+}
+
+int output_checked(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING)
-    return luaL_error(L, "io.output to a file is not allowed: %s", kUnsafeHint);
+    throw ArgumentError(std::string("io.output to a file is not allowed: ") + kUnsafeHint);
+  return 0;
+}
+
+int io_output(lua_State* L) {
+  guarded<output_checked>(L);
   return call_original(L);
 }
 
@@ -169,33 +231,36 @@ void wrap(lua_State* L, const char* table, const char* field, lua_CFunction wrap
 
 // --- require -------------------------------------------------------------------------------
 
-/// package.searchers entry: finds "<name>.lua" in the scene's readable folders only.
+/// package.searchers entry: finds "<name>.lua" (or "<name>/init.lua") in the scene's folders;
+/// sandboxed, only in those it may read.
 int scene_searcher(lua_State* L) {
-  const std::string name = luaL_checkstring(L, 1);
+  if (lua_type(L, 1) != LUA_TSTRING) return 0;
+  const std::string name = lua_tostring(L, 1);
   std::string relative = name;
   for (char& c : relative)
     if (c == '.') c = '/';
   const LoaderContext& ctx = context(L);
   for (const auto& folder : search_folders(ctx.script_dir)) {
     for (const char* pattern : {".lua", "/init.lua"}) {
-      const auto candidate = folder / (relative + pattern);
+      // Concatenated, not path-joined: a name like ".x" must not become the absolute "/x".
+      const std::filesystem::path candidate = folder.string() + "/" + relative + pattern;
       std::error_code ec;
       if (!std::filesystem::is_regular_file(candidate, ec)) continue;
       if (!ctx.options.unsafe_lua && !may_read(ctx, candidate)) continue;
-      const std::string path = candidate.string();
+      const std::string path = candidate.lexically_normal().string();
       if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK)
-        return luaL_error(L, "error loading module '%s' from '%s':\n\t%s", name.c_str(), path.c_str(), lua_tostring(L, -1));
+        throw ArgumentError("error loading module '" + name + "' from file '" + path + "':\n\t" + lua_tostring(L, -1));
       lua_pushstring(L, path.c_str());
       return 2;
     }
   }
-  lua_pushfstring(L, "no file '%s.lua' in the scene's folders", relative.c_str());
+  lua_pushstring(L, ("no file '" + relative + ".lua' in the scene's folders").c_str());
   return 1;
 }
 
 /// package.searchers entry for native modules in the sandbox.
 int refuse_native_module(lua_State* L) {
-  lua_pushfstring(L, "require of C modules ('%s') is not allowed: %s", luaL_checkstring(L, 1), kUnsafeHint);
+  lua_pushfstring(L, "require of C modules ('%s') is not allowed: %s", lua_tostring(L, 1), kUnsafeHint);
   return 1;
 }
 
@@ -203,10 +268,17 @@ int refuse_native_module(lua_State* L) {
 
 /// readobj(file) -> vertices, faces (0-based triangles), as the course's readobj.lua returns.
 int builtin_readobj_impl(lua_State* L) {
-  const std::string name = luaL_checkstring(L, 1);
+  if (lua_type(L, 1) != LUA_TSTRING)
+    throw ArgumentError("readobj: argument 1 (file name) must be a string, got a " + std::string(luaL_typename(L, 1)));
+  const std::string name = lua_tostring(L, 1);
   const auto path = resolve_input(name, context(L).script_dir);
-  if (!path) throw ArgumentError("readobj: cannot find '" + name + "'");
-  const ObjMesh mesh = load_obj(*path);
+  if (!path) throw ArgumentError("readobj: " + not_found_message(name));
+  ObjMesh mesh;
+  try {
+    mesh = load_obj(*path);
+  } catch (const SceneError& e) {
+    throw ArgumentError(std::string("readobj: ") + e.what());
+  }
   lua_createtable(L, int(mesh.positions.size()), 0);
   for (size_t i = 0; i < mesh.positions.size(); ++i) {
     lua_createtable(L, 3, 0);
@@ -232,20 +304,29 @@ int builtin_module_loader(lua_State*) { return 0; }
 
 /// package.searchers entry: `require('readobj')` without a scene file of that name.
 int builtin_searcher(lua_State* L) {
-  if (std::strcmp(luaL_checkstring(L, 1), "readobj") == 0) {
+  const char* name = lua_tostring(L, 1);
+  if (name && std::strcmp(name, "readobj") == 0) {
     lua_pushcfunction(L, builtin_module_loader);
     lua_pushstring(L, "built-in readobj");
     return 2;
   }
-  lua_pushstring(L, "no built-in module of that name");
+  lua_pushfstring(L, "no built-in module '%s'", name ? name : "?");
   return 1;
 }
 
-void append_searcher(lua_State* L, lua_CFunction searcher) {
+constexpr lua_Integer kAtEnd = 0;
+
+/// Puts `searcher` at `position` (or kAtEnd) of package.searchers, moving later entries up.
+void insert_searcher(lua_State* L, lua_Integer position, lua_CFunction searcher) {
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "searchers");
+  if (position == kAtEnd) position = lua_Integer(lua_rawlen(L, -1)) + 1;
+  for (auto i = lua_Integer(lua_rawlen(L, -1)); i >= position; --i) {
+    lua_rawgeti(L, -1, i);
+    lua_rawseti(L, -2, i + 1);
+  }
   lua_pushcfunction(L, searcher);
-  lua_rawseti(L, -2, lua_Integer(lua_rawlen(L, -2) + 1));
+  lua_rawseti(L, -2, position);
   lua_pop(L, 2);
 }
 
@@ -264,39 +345,45 @@ void install_compatibility(lua_State* L) {
   lua_pushcfunction(L, guarded<builtin_readobj_impl>);
   lua_setglobal(L, "readobj");
 
-  // require finds the scene's own modules first (searcher 2 is package.path's).
-  lua_getglobal(L, "package");
-  lua_getfield(L, -1, "searchers");
-  lua_pushcfunction(L, scene_searcher);
-  lua_rawseti(L, -2, 2);
-  lua_pop(L, 2);
-  append_searcher(L, builtin_searcher);
+  // require: preload, then the scene's folders, then package.path/cpath, then the built-ins
+  // (last, so that a scene's own readobj.lua wins).
+  insert_searcher(L, 2, guarded<scene_searcher>);
+  insert_searcher(L, kAtEnd, builtin_searcher);
 }
 
 void install_path_resolution(lua_State* L) {
   wrap(L, "io", "open", io_open);
-  wrap(L, "io", "lines", path_wrapper<kIoLines>);
-  wrap(L, "io", "input", path_wrapper<kIoInput>);
-  wrap(L, nullptr, "dofile", path_wrapper<kDofile>);
+  wrap(L, "io", "lines", path_wrapper<kIoLines, false>);
+  wrap(L, "io", "input", path_wrapper<kIoInput, false>);
+  wrap(L, nullptr, "dofile", path_wrapper<kDofile, true>);
   wrap(L, nullptr, "loadfile", loadfile_text_only);
+  wrap(L, "os", "remove", os_file_operation);
+  wrap(L, "os", "rename", os_file_operation);
 }
 
 void install_sandbox(lua_State* L) {
   for (const char* field : {"execute", "exit", "remove", "rename", "tmpname"}) replace_with_refusal(L, "os", field);
   for (const char* field : {"popen", "tmpfile"}) replace_with_refusal(L, "io", field);
   replace_with_refusal(L, "package", "loadlib");
-  wrap(L, "io", "output", io_output_checked);
+  wrap(L, "io", "output", io_output);
   wrap(L, nullptr, "load", load_text_only);
 
-  // No native modules: searchers 3 and 4 load C libraries.
+  // require: preload, the scene's readable folders, the built-ins, and a refusal for native
+  // modules; the package.path/cpath searchers go, so neither path can reach outside.
   lua_getglobal(L, "package");
   lua_pushstring(L, "");
   lua_setfield(L, -2, "cpath");
   lua_getfield(L, -1, "searchers");
-  lua_pushcfunction(L, refuse_native_module);
-  lua_rawseti(L, -2, 3);
-  lua_pushnil(L);
-  lua_rawseti(L, -2, 4);
+  for (auto i = lua_Integer(lua_rawlen(L, -1)); i > 1; --i) {
+    lua_pushnil(L);
+    lua_rawseti(L, -2, i);
+  }
+  const lua_CFunction searchers[] = {guarded<scene_searcher>, builtin_searcher, refuse_native_module};
+  lua_Integer position = 2;
+  for (const lua_CFunction searcher : searchers) {
+    lua_pushcfunction(L, searcher);
+    lua_rawseti(L, -2, position++);
+  }
   lua_pop(L, 2);
 
   // The debug library can reach every upvalue and the registry: remove it.

@@ -1,6 +1,8 @@
 #include "mjray/lua/scene_loader.h"
 
 #include <memory>
+#include <string>
+#include <vector>
 
 extern "C" {
 #include <lauxlib.h>
@@ -45,6 +47,49 @@ FileLocation caller_location(lua_State* L) {
   return {context(L).script.string(), 0};
 }
 
+std::string not_found_message(const std::string& name) {
+  return "cannot find '" + name +
+         "' (looked in the scene's folder, its parent folders, their Assets/ folders and the working directory)";
+}
+
+LuaNode::~LuaNode() {
+  std::vector<std::shared_ptr<LuaNode>> pending = std::move(children);
+  while (!pending.empty()) {
+    std::shared_ptr<LuaNode> node = std::move(pending.back());
+    pending.pop_back();
+    // Sole owner: take its children so that destroying it recurses no further.
+    if (node.use_count() == 1) {
+      for (auto& child : node->children) pending.push_back(std::move(child));
+      node->children.clear();
+    }
+  }
+}
+
+LoaderContext::~LoaderContext() {
+  for (const auto& weak : nodes) {
+    if (auto node = weak.lock()) {
+      auto children = std::move(node->children);
+      node->children.clear();
+    }
+  }
+}
+
+namespace {
+
+/// lua_pcall message handler: string messages already carry "file:line:" (from Lua or
+/// `guarded`); any other error value is described at the line that raised it.
+int describe_error_value(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TSTRING) return 1;
+  const int type = lua_type(L, 1);
+  const std::string what = type == LUA_TNIL ? std::string("nil") : std::string("a ") + lua_typename(L, type);
+  const std::string message =
+      caller_location(L).to_string() + ": the script raised an error value that is not a string (" + what + ")";
+  lua_pushstring(L, message.c_str());
+  return 1;
+}
+
+}  // namespace
+
 }  // namespace lua
 
 SceneDescription load_scene(const std::filesystem::path& script, const SceneLoadOptions& options) {
@@ -61,20 +106,24 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   lua_State* L = state.get();
   luaL_openlibs(L);
   lua::set_context(L, &ctx);
-  if (!options.unsafe_lua) lua::install_sandbox(L);
+  // The sandbox goes last: it rebuilds package.searchers from what compatibility installed.
   lua::install_compatibility(L);
   lua::install_path_resolution(L);
+  if (!options.unsafe_lua) lua::install_sandbox(L);
   lua::register_gr(L);
 
-  // Compute: load and run the chunk; errors arrive as "file:line: message" strings.
-  std::string error;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(script, ec)) throw SceneError(script.string() + ": cannot open the scene file");
-  if (luaL_loadfilex(L, script.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK) {
+  if (!std::filesystem::exists(script, ec))
+    throw SceneError(script.string() + ": cannot open the scene file (no such file)");
+  if (!std::filesystem::is_regular_file(script, ec))
+    throw SceneError(script.string() + ": cannot open the scene file (not a regular file)");
+
+  // Compute: load and run the chunk; errors arrive as "file:line: message" strings.
+  lua_pushcfunction(L, lua::describe_error_value);
+  if (luaL_loadfilex(L, script.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 0, 1) != LUA_OK) {
     const char* message = lua_tostring(L, -1);
-    error = message ? message : "error object is not a string";
+    throw SceneError(message ? message : script.string() + ": the script raised an error that is not a string");
   }
-  if (!error.empty()) throw SceneError(error);
   if (description.jobs.empty()) throw SceneError(script.string() + ": the scene never calls gr.render");
   return description;
 }

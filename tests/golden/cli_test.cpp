@@ -1,0 +1,251 @@
+// The real mjray program: exit codes, messages on stderr, and where images land. Each run
+// starts in "/" so nothing depends on the test's working directory.
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "mjray/io/image_writer.h"
+#include "support/test_paths.h"
+
+namespace mjray {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;  ///< stdout
+  std::string err;  ///< stderr
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// A tiny lit sphere; `output` is a Lua expression naming the image.
+std::string tiny_scene(const std::string& output = "'out.png'", int width = 8, int height = 6) {
+  return "root = gr.node('root')\n"
+         "s = gr.nh_sphere('s', {0, 0, 0}, 1)\n"
+         "s:set_material(gr.material({0.8, 0.2, 0.2}, {0.5, 0.5, 0.5}, 20))\n"
+         "root:add_child(s)\n"
+         "gr.render(root, " + output + ", " + std::to_string(width) + ", " + std::to_string(height) +
+         ", {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, {gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n";
+}
+
+class GoldenCli : public ::testing::Test {
+ protected:
+  fs::path write(const fs::path& name, const std::string& body) {
+    const fs::path path = dir_ / name;
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << body;
+    return path;
+  }
+
+  /// Runs `mjray ARGS` from "/", capturing both streams into files of the run folder.
+  RunResult run(const std::vector<std::string>& args) {
+    const fs::path out = logs_ / "stdout.txt", err = logs_ / "stderr.txt";
+    std::string command = "cd / && " + quoted(test::mjray_binary().string());
+    for (const auto& arg : args) command += " " + quoted(arg);
+    command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
+    const int status = std::system(command.c_str());
+    RunResult result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(out);
+    result.err = read_file(err);
+    return result;
+  }
+
+  /// The names in a folder, sorted, space-separated.
+  static std::string listing(const fs::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : " ") + n;
+    return out;
+  }
+
+  const fs::path dir_ = test::make_temp_dir("cli");
+  const fs::path logs_ = test::make_temp_dir("cli-logs");
+};
+
+TEST_F(GoldenCli, GoodSceneExitsZeroAndWritesTheImageBesideTheScript) {
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 8, 6));
+  const RunResult r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  ASSERT_TRUE(fs::exists(dir_ / "out.png"));
+  const Image image = read_image(dir_ / "out.png");
+  EXPECT_EQ(image.width(), 8);
+  EXPECT_EQ(image.height(), 6);
+  EXPECT_EQ(listing(dir_), "out.png scene.lua");  // no temporary files left
+}
+
+TEST_F(GoldenCli, SceneErrorExitsOneNamingTheScriptLine) {
+  const auto scene = write("scene.lua", "root = gr.node('root')\nm = gr.material({1, 0}, {0, 0, 0}, 10)\n");
+  const RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() +
+                       ":2: gr.material: argument 1 (kd) must be a table of 3 numbers, got a table of 2 values\n");
+}
+
+TEST_F(GoldenCli, MissingSceneFileExitsOne) {
+  const RunResult r = run({(dir_ / "absent.lua").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + (dir_ / "absent.lua").string() + ": cannot open the scene file (no such file)\n");
+}
+
+TEST_F(GoldenCli, BadCommandLinesExitTwo) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const std::string hint = "(run 'mjray --help' for the options)\n";
+  RunResult r = run({"--bogus", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: unknown option '--bogus'\n" + hint);
+  r = run({scene.string(), "-r"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: -r needs a value\n" + hint);
+  r = run({});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: no scene file given\n" + hint);
+  r = run({"-g", "many", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: -g expects a whole number from 0 to 4096, got 'many'\n" + hint);
+  r = run({"--transform-order", "sideways", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: --transform-order expects pre, post or auto, got 'sideways'\n" + hint);
+  EXPECT_EQ(listing(dir_), "scene.lua");  // nothing rendered
+}
+
+TEST_F(GoldenCli, HelpAndVersionExitZero) {
+  RunResult r = run({"--help"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind("usage: mjray [options] scene.lua\n", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("--unsafe-lua"), std::string::npos);
+  r = run({"-h"});
+  EXPECT_EQ(r.exit_code, 0);
+  r = run({"--version"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.out.rfind("mjray ", 0), 0u) << r.out;
+}
+
+TEST_F(GoldenCli, OutputToAnUnwritablePathExitsOneAndLeavesNoTemporaryFile) {
+  const auto scene = write("scene.lua", tiny_scene());
+  write("blocker", "a regular file, not a folder");
+  const fs::path target = dir_ / "blocker" / "out.png";
+  const RunResult r = run({"--quiet", "--output", target.string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("mjray: error: cannot write '" + target.string() + "': ", 0), 0u) << r.err;
+  EXPECT_EQ(listing(dir_), "blocker scene.lua");
+  EXPECT_EQ(read_file(dir_ / "blocker"), "a regular file, not a folder");
+}
+
+TEST_F(GoldenCli, ExistingImageIsUntouchedWhenTheSceneFails) {
+  write("out.png", "previous image bytes");
+  const auto scene = write("scene.lua", tiny_scene() + "\nerror('late failure')\n");
+  const RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() + ":7: late failure\n");
+  EXPECT_EQ(read_file(dir_ / "out.png"), "previous image bytes");
+  EXPECT_EQ(listing(dir_), "out.png scene.lua");
+}
+
+TEST_F(GoldenCli, OutputOptionNamesTheImage) {
+  const auto scene = write("scene.lua", tiny_scene("'ignored.png'", 5, 4));
+  const fs::path target = dir_ / "chosen.ppm";
+  const RunResult r = run({"--quiet", "--output", target.string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_image(target).width(), 5);
+  EXPECT_FALSE(fs::exists(dir_ / "ignored.png"));
+}
+
+TEST_F(GoldenCli, OutdirIsCreated) {
+  const auto scene = write("scene.lua", tiny_scene("'sub/frame.png'", 3, 2));
+  const fs::path outdir = dir_ / "new" / "deeper";
+  const RunResult r = run({"--quiet", "--outdir", outdir.string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(outdir / "frame.png"));
+  EXPECT_EQ(read_image(outdir / "frame.png").height(), 2);
+}
+
+TEST_F(GoldenCli, OutdirThatIsAFileFailsBeforeRendering) {
+  const auto scene = write("scene.lua", tiny_scene());
+  write("blocker", "x");
+  const RunResult r = run({"--quiet", "--outdir", (dir_ / "blocker").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("mjray: error: cannot create the output folder '" + (dir_ / "blocker").string() + "': ", 0), 0u)
+      << r.err;
+}
+
+TEST_F(GoldenCli, OutputWithASceneThatRendersTwiceIsAnError) {
+  const auto scene = write("scene.lua", tiny_scene("'a.png'") + tiny_scene("'b.png'"));
+  const RunResult r = run({"--quiet", "--output", (dir_ / "one.png").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() +
+                       ": --output names one file but the scene renders 2 images; use --outdir\n");
+  EXPECT_EQ(listing(dir_), "scene.lua");
+}
+
+TEST_F(GoldenCli, AnimationWritesEveryFrame) {
+  const auto scene = write("scene.lua",
+                           "root = gr.node('root')\n"
+                           "ball = gr.nh_sphere('b', {0, 0, 0}, 0.5)\n"
+                           "root:add_child(ball)\n"
+                           "for i = 1, 3 do\n"
+                           "  ball:translate(0.1, 0, 0)\n"
+                           "  gr.render(root, 'frame' .. i .. '.png', 4, 4, {0,0,5}, {0,0,-1}, {0,1,0}, 50, {0.2,0.2,0.2},\n"
+                           "            {gr.light({0, 0, 5}, {1, 1, 1}, {1, 0, 0})})\n"
+                           "end\n");
+  const RunResult r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(listing(dir_), "frame1.png frame2.png frame3.png scene.lua");
+}
+
+TEST_F(GoldenCli, OriginalShortOptionsAreAccepted) {
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 4, 3));
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"-g", "4", "-s", "2", "-a", "2", "-r", "2", "-f", "2"}, {"-o"}, {"-g", "0"}, {"-j", "2", "--seed", "7"}}) {
+    std::vector<std::string> all = args;
+    all.push_back("--quiet");
+    all.push_back(scene.string());
+    const RunResult r = run(all);
+    EXPECT_EQ(r.exit_code, 0) << args[0] << ": " << r.err;
+  }
+  EXPECT_EQ(read_image(dir_ / "out.png").width(), 4);
+}
+
+TEST_F(GoldenCli, SandboxIsOnByDefaultAndUnsafeLuaLiftsIt) {
+  const auto scene = write("scene.lua", "os.execute('true')\n" + tiny_scene());
+  RunResult r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() +
+                       ":1: os.execute is not allowed: scene scripts run sandboxed; run mjray with --unsafe-lua to "
+                       "allow it\n");
+  r = run({"--quiet", "--unsafe-lua", scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST_F(GoldenCli, RelativeSceneNameResolvesAgainstTheWorkingDirectory) {
+  write("scene.lua", tiny_scene("'rel.png'", 3, 3));
+  const std::string command = "cd " + quoted(dir_.string()) + " && " + quoted(test::mjray_binary().string()) +
+                              " --quiet scene.lua >/dev/null 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "rel.png"));
+}
+
+}  // namespace
+}  // namespace mjray

@@ -1,0 +1,281 @@
+// The default sandbox: what a scene script may not do (each refusal names the call and the
+// scene.lua:LINE), what it still may, and that --unsafe-lua lifts it.
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "mjray/lua/scene_loader.h"
+#include "support/test_paths.h"
+
+namespace mjray {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kHint = "scene scripts run sandboxed; run mjray with --unsafe-lua to allow it";
+
+// Renders `root` into a file named by the Lua expression `output`, which carries results out.
+std::string render_call(const std::string& output = "'out.png'") {
+  return "gr.render(gr.node('root'), " + output +
+         ", 4, 3, {0,0,10}, {0,0,-1}, {0,1,0}, 50, {0,0,0}, {gr.light({0,0,10}, {1,1,1}, {1,0,0})})\n";
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class LuaSandbox : public ::testing::Test {
+ protected:
+  fs::path write(const fs::path& name, const std::string& body) {
+    const fs::path path = dir_ / name;
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << body;
+    return path;
+  }
+
+  SceneDescription load(const std::string& script, const SceneLoadOptions& options = {}) {
+    return load_scene(write("scene.lua", script), options);
+  }
+
+  std::string error_of(const std::string& script, const SceneLoadOptions& options = {}) {
+    try {
+      load(script, options);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "(no error)";
+  }
+
+  /// The output name a script that ends with render_call(expr) produced.
+  std::string result_of(const std::string& script, const SceneLoadOptions& options = {}) {
+    return load(script, options).jobs.at(0).output.string();
+  }
+
+  std::string at(int line) const { return (dir_ / "scene.lua").string() + ":" + std::to_string(line) + ": "; }
+
+  static SceneLoadOptions unsafe() {
+    SceneLoadOptions options;
+    options.unsafe_lua = true;
+    return options;
+  }
+
+  const fs::path dir_ = test::make_temp_dir("sbx");
+};
+
+// --- refused by default ------------------------------------------------------------------
+
+TEST_F(LuaSandbox, OsExecute) {
+  EXPECT_EQ(error_of("local x = 1\nos.execute('true')\n"), at(2) + "os.execute is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, OsExecuteThroughPcallStillNamesTheScriptLine) {
+  EXPECT_EQ(result_of("local ok, message = pcall(os.execute, 'true')\n" + render_call("message")),
+            at(1) + "os.execute is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, IoPopen) {
+  EXPECT_EQ(error_of("local p = io.popen('ls')\n"), at(1) + "io.popen is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, IoOpenForWritingCreatesNothing) {
+  EXPECT_EQ(error_of("\nlocal f = io.open('x.txt', 'w')\n"), at(2) + "io.open for writing ('w') is not allowed: " + kHint);
+  EXPECT_EQ(error_of("local f = io.open('x.txt', 'a+')\n"), at(1) + "io.open for writing ('a+') is not allowed: " + kHint);
+  EXPECT_FALSE(fs::exists(dir_ / "x.txt"));
+}
+
+TEST_F(LuaSandbox, IoOutputToAFile) {
+  EXPECT_EQ(error_of("io.output('y.txt')\n"), at(1) + "io.output to a file is not allowed: " + kHint);
+  EXPECT_FALSE(fs::exists(dir_ / "y.txt"));
+}
+
+TEST_F(LuaSandbox, OsRemoveLeavesTheFile) {
+  write("victim.txt", "keep me");
+  EXPECT_EQ(error_of("os.remove('victim.txt')\n"), at(1) + "os.remove is not allowed: " + kHint);
+  EXPECT_EQ(read_file(dir_ / "victim.txt"), "keep me");
+}
+
+TEST_F(LuaSandbox, OsRename) {
+  write("victim.txt", "keep me");
+  EXPECT_EQ(error_of("os.rename('victim.txt', 'moved.txt')\n"), at(1) + "os.rename is not allowed: " + kHint);
+  EXPECT_TRUE(fs::exists(dir_ / "victim.txt"));
+  EXPECT_FALSE(fs::exists(dir_ / "moved.txt"));
+}
+
+TEST_F(LuaSandbox, OsExitAndTmpname) {
+  EXPECT_EQ(error_of("os.exit(0)\n"), at(1) + "os.exit is not allowed: " + kHint);
+  EXPECT_EQ(error_of("local n = os.tmpname()\n"), at(1) + "os.tmpname is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, PackageLoadlib) {
+  EXPECT_EQ(error_of("local f = package.loadlib('x', 'y')\n"), at(1) + "package.loadlib is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, RequireOfACModule) {
+  EXPECT_EQ(error_of("local lfs = require('lfs')\n"),
+            at(1) + "module 'lfs' not found:\n"
+                    "\tno field package.preload['lfs']\n"
+                    "\tno file 'lfs.lua' in the scene's folders\n"
+                    "\tno built-in module 'lfs'\n"
+                    "\trequire of C modules ('lfs') is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, RequireOfACModuleThatOnlyTheCSearcherCouldFind) {
+  write("native.so", "not really a library");
+  const std::string message =
+      error_of("package.cpath = '" + (dir_ / "?.so").string() + "'\nlocal n = require('native')\n");
+  EXPECT_EQ(message.rfind(at(2) + "module 'native' not found:\n", 0), 0u) << message;
+  EXPECT_NE(message.find("require of C modules ('native') is not allowed"), std::string::npos) << message;
+}
+
+TEST_F(LuaSandbox, DofileOutsideTheSceneTree) {
+  EXPECT_EQ(error_of("dofile('/etc/hostname')\n"),
+            at(1) + "dofile: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+  EXPECT_EQ(error_of("local f = loadfile('/etc/hostname')\n"),
+            at(1) + "loadfile: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+}
+
+TEST_F(LuaSandbox, RequireIgnoresPackagePathOutsideTheSceneTree) {
+  const fs::path sibling = test::make_temp_dir("sbx-sibling");
+  std::ofstream(sibling / "evil.lua") << "EVIL_RAN = true\nreturn {}\n";
+  const std::string message = error_of(
+      "package.path = '" + (sibling / "?.lua").string() + ";' .. package.path\n"
+      "local evil = require('evil')\n");
+  EXPECT_EQ(message.rfind(at(2) + "module 'evil' not found:\n", 0), 0u) << message;
+  EXPECT_NE(message.find("no file 'evil.lua' in the scene's folders"), std::string::npos) << message;
+  // Nor by a relative name that climbs out of the scene's folder.
+  const std::string climbing = error_of("local evil = require('../" + sibling.filename().string() + "/evil')\n");
+  EXPECT_EQ(climbing.rfind(at(1) + "module '../", 0), 0u) << climbing;
+}
+
+TEST_F(LuaSandbox, IoOpenOutsideForReading) {
+  EXPECT_EQ(error_of("local f = io.open('/etc/hostname')\n"),
+            at(1) + "io.open: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+  const fs::path sibling = test::make_temp_dir("sbx-secret");
+  std::ofstream(sibling / "secret.txt") << "secret";
+  const std::string relative = "../" + sibling.filename().string() + "/secret.txt";
+  EXPECT_EQ(error_of("local f = io.open('" + relative + "', 'r')\n"),
+            at(1) + "io.open: '" + relative + "' is outside the scene's folders (" + kHint + ")");
+}
+
+TEST_F(LuaSandbox, IoLinesOutside) {
+  EXPECT_EQ(error_of("\nfor line in io.lines('/etc/hostname') do end\n"),
+            at(2) + "io.lines: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+}
+
+TEST_F(LuaSandbox, SymlinkOutOfTheSceneFolderIsOutside) {
+  std::error_code ec;
+  fs::create_symlink("/etc/hostname", dir_ / "link.txt", ec);
+  if (ec) GTEST_SKIP() << "cannot create a symlink: " << ec.message();
+  EXPECT_EQ(error_of("local f = io.open('link.txt')\n"),
+            at(1) + "io.open: 'link.txt' is outside the scene's folders (" + kHint + ")");
+}
+
+TEST_F(LuaSandbox, LoadOfABinaryChunk) {
+  EXPECT_EQ(error_of("local dumped = string.dump(function() return 1 end)\nlocal f = load(dumped)\n"),
+            at(2) + "load of a precompiled (binary) chunk is not allowed: " + kHint);
+}
+
+TEST_F(LuaSandbox, DebugLibraryIsAbsent) {
+  EXPECT_EQ(error_of("local info = debug.getinfo(1)\n"), at(1) + "attempt to index a nil value (global 'debug')");
+  const std::string message = error_of("local d = require('debug')\n");
+  EXPECT_EQ(message.rfind(at(1) + "module 'debug' not found:", 0), 0u) << message;
+}
+
+TEST_F(LuaSandbox, ErrorsOfWrappedFunctionsNameTheScriptLine) {
+  // io.lines raises from C, below the path-resolving wrapper: the location is the script's.
+  EXPECT_EQ(error_of("\nfor line in io.lines('missing.txt') do end\n"),
+            at(2) + "cannot open file '" + (dir_ / "missing.txt").string() + "' (No such file or directory)");
+  // An error inside a dofile'd chunk keeps that chunk's own location.
+  const auto part = write("part.lua", "local x = 1\nerror('boom')\n");
+  EXPECT_EQ(error_of("dofile('part.lua')\n"), part.string() + ":2: boom");
+}
+
+// --- allowed by default ------------------------------------------------------------------
+
+TEST_F(LuaSandbox, ReadingInTheScenesFolderAndAParentsAssetsFolder) {
+  write("scenes/data.txt", "near\nsecond\n");
+  write("Assets/far.txt", "far");
+  const auto script = write("scenes/scene.lua",
+                            "local a = io.open('data.txt'):read('l')\n"
+                            "local b = io.open('far.txt'):read('a')\n"
+                            "local n = 0\n"
+                            "for line in io.lines('data.txt') do n = n + 1 end\n" +
+                                render_call("a .. '-' .. b .. '-' .. n"));
+  EXPECT_EQ(load_scene(script, {}).jobs.at(0).output, fs::path("near-far-2"));
+}
+
+TEST_F(LuaSandbox, MissingFileInTheScenesFolderIsAnOrdinaryNilResult) {
+  EXPECT_EQ(result_of("local f, message = io.open('none.txt')\n" + render_call("tostring(f)")), "nil");
+}
+
+TEST_F(LuaSandbox, RequireOfAHelperBesideTheScene) {
+  write("helper.lua", "return {answer = 42}\n");
+  write("lib/util.lua", "return {name = 'util'}\n");
+  EXPECT_EQ(result_of("local h = require('helper')\nlocal u = require('lib.util')\n" +
+                      render_call("h.answer .. u.name")),
+            "42util");
+}
+
+TEST_F(LuaSandbox, DofileLoadfileAndLoadOfTextInTheScenesFolder) {
+  write("part.lua", "return math.floor(42.5)\n");  // needs _ENV
+  // load/loadfile without an env argument keep the global environment.
+  EXPECT_EQ(result_of("local a = dofile('part.lua')\n"
+                      "local b = load('return 1 + 1')()\n"
+                      "local c = load('return x', 'c', 't', {x = 3})()\n"
+                      "local d = loadfile('part.lua')()\n"
+                      "local e = load('return print')() == print\n"
+                      "local f = loadfile('part.lua', 't')() == 42\n" +
+                      render_call("a .. b .. c .. d .. tostring(e) .. tostring(f)")),
+            "422342truetrue");
+}
+
+TEST_F(LuaSandbox, PrintStringTableAndMathWork) {
+  EXPECT_EQ(result_of("print('hello from the scene')\n"
+                      "local t = {3, 1, 2}\n"
+                      "table.sort(t)\n"
+                      "local s = string.format('%d%s', math.floor(math.pi), table.concat(t))\n"
+                      "local co = coroutine.wrap(function() coroutine.yield(string.upper('x')) end)\n" +
+                      render_call("s .. co() .. utf8.char(65)")),
+            "3123XA");
+}
+
+// --- lifted by unsafe_lua ----------------------------------------------------------------
+
+TEST_F(LuaSandbox, UnsafeLuaAllowsOsExecuteAndWriting) {
+  EXPECT_EQ(result_of("local ok = os.execute('true')\n"
+                      "local f = assert(io.open('x.txt', 'w'))\n"
+                      "f:write('written') f:close()\n" +
+                      render_call("tostring(ok)"),
+                      unsafe()),
+            "true");
+  EXPECT_EQ(read_file(dir_ / "x.txt"), "written");
+  write("victim.txt", "bye");
+  load("assert(os.remove('victim.txt'))\n" + render_call(), unsafe());
+  EXPECT_FALSE(fs::exists(dir_ / "victim.txt"));
+}
+
+TEST_F(LuaSandbox, UnsafeLuaHonoursPackagePath) {
+  const fs::path sibling = test::make_temp_dir("sbx-path");
+  std::ofstream(sibling / "outside.lua") << "return {where = 'outside'}\n";
+  EXPECT_EQ(result_of("package.path = '" + (sibling / "?.lua").string() + ";' .. package.path\n"
+                      "local m = require('outside')\n" + render_call("m.where"),
+                      unsafe()),
+            "outside");
+}
+
+TEST_F(LuaSandbox, UnsafeLuaKeepsTheCompatibilityShims) {
+  write("readobj.lua", "function readobj() return 'mine' end\n");
+  EXPECT_EQ(result_of("require('readobj')\nlocal a = unpack({'u'})\n" +
+                      render_call("readobj() .. a .. tostring(string.gfind ~= nil)"),
+                      unsafe()),
+            "mineutrue");
+}
+
+}  // namespace
+}  // namespace mjray
