@@ -59,7 +59,7 @@ void render_job(const CommandLine& cl, const RenderJob& job, double parse_second
 
   // Compute the image.
   const PinholeCamera camera(job.camera, job.width, job.height);
-  const WhittedIntegrator integrator(world, *accel, {cl.max_reflection_depth, cl.max_refraction_depth});
+  const WhittedIntegrator integrator(world, *accel, {cl.max_reflection_depth, cl.max_refraction_depth, cl.area_light_samples});
   RenderSettings settings;
   settings.threads = cl.threads;
   settings.seed = cl.seed;

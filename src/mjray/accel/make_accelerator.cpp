@@ -1,14 +1,36 @@
 #include "mjray/accel/make_accelerator.h"
 
 #include "mjray/accel/brute_force.h"
+#include "mjray/accel/bvh.h"
+#include "mjray/accel/uniform_grid.h"
 #include "mjray/core/error.h"
+
+#ifdef MJRAY_HAVE_EMBREE
+#include "mjray/accel/embree_accelerator.h"
+#endif
 
 namespace mjray {
 
-std::string accelerator_names() { return "none"; }
+std::string accelerator_names() {
+#ifdef MJRAY_HAVE_EMBREE
+  return "none, grid, bvh, embree";
+#else
+  return "none, grid, bvh";
+#endif
+}
 
 std::unique_ptr<Accelerator> make_accelerator(const World& world, const AcceleratorOptions& options) {
-  if (options.kind == "none" || options.kind == "bvh") return std::make_unique<BruteForce>(world);
+  if (options.kind == "bvh") return std::make_unique<Bvh>(world, options.threads);
+  if (options.kind == "none") return std::make_unique<BruteForce>(world);
+  if (options.kind == "grid") return std::make_unique<UniformGrid>(world, options.grid_size);
+  if (options.kind == "embree") {
+#ifdef MJRAY_HAVE_EMBREE
+    return std::make_unique<EmbreeAccelerator>(world, options.threads);
+#else
+    throw SceneError("accelerator 'embree' is not available: this mjray was built without Embree "
+                     "(install libembree-dev and configure with -DMJRAY_WITH_EMBREE=ON)");
+#endif
+  }
   throw SceneError("unknown accelerator '" + options.kind + "' (this build has: " +
                    accelerator_names() + ")");
 }

@@ -2,6 +2,9 @@
 /// Watertight ray/triangle intersection (Woop, Benthin and Wald 2013): rays through a shared
 /// edge or vertex hit at least one of the triangles that share it.
 
+#include <array>
+#include <bit>
+#include <cmath>
 #include <optional>
 
 #include "mjray/core/ray.h"
@@ -16,6 +19,72 @@ struct TriangleHit {
   float b1;
   float b2;
 };
+
+/// The per-ray part of the watertight test (axis permutation and shear), computed once per
+/// ray so that accelerators can test many triangles against it.
+struct WatertightRay {
+  int kx = 0, ky = 1, kz = 2;          ///< permutation that makes the largest |direction| z
+  float sx = 0, sy = 0, sz = 0;        ///< shear that maps the direction to +z
+  std::array<float, 3> origin{};       ///< world-space origin, unpermuted
+  bool valid = false;                  ///< false for a zero or NaN dominant direction
+
+  WatertightRay() = default;
+  explicit WatertightRay(const Ray& ray) {
+    const Vector3 ad = abs(ray.direction);
+    kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    valid = ad[kz] > 0;
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    const auto d = std::bit_cast<std::array<float, 3>>(ray.direction);
+    sx = -d[kx] / d[kz];
+    sy = -d[ky] / d[kz];
+    sz = 1.f / d[kz];
+    origin = std::bit_cast<std::array<float, 3>>(ray.origin);
+  }
+};
+
+/// The hit of the prepared ray with triangle (p0, p1, p2) for t in (0, t_max), or nothing.
+/// Inline so that accelerators' leaf loops share exactly this arithmetic (and so the same
+/// barycentrics) with `intersect_triangle` below.
+inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, float t_max,
+                                                     const std::array<float, 3>& p0,
+                                                     const std::array<float, 3>& p1,
+                                                     const std::array<float, 3>& p2) {
+  if (!ray.valid) return std::nullopt;
+  const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+  const auto& o = ray.origin;
+
+  // Compute vertices relative to the ray origin in the permuted frame, sheared so that the
+  // ray runs along +z.
+  const float az = p0[kz] - o[kz], bz = p1[kz] - o[kz], cz = p2[kz] - o[kz];
+  const float ax = (p0[kx] - o[kx]) + ray.sx * az, ay = (p0[ky] - o[ky]) + ray.sy * az;
+  const float bx = (p1[kx] - o[kx]) + ray.sx * bz, by = (p1[ky] - o[ky]) + ray.sy * bz;
+  const float cx = (p2[kx] - o[kx]) + ray.sx * cz, cy = (p2[ky] - o[ky]) + ray.sy * cz;
+
+  // Compute edge functions; fall back to double when one is exactly zero so that
+  // edges shared by two triangles are decided consistently.
+  float e0 = bx * cy - by * cx;
+  float e1 = cx * ay - cy * ax;
+  float e2 = ax * by - ay * bx;
+  if (e0 == 0 || e1 == 0 || e2 == 0) [[unlikely]] {
+    e0 = float(double(bx) * cy - double(by) * cx);
+    e1 = float(double(cx) * ay - double(cy) * ax);
+    e2 = float(double(ax) * by - double(ay) * bx);
+  }
+  if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return std::nullopt;
+  const float det = e0 + e1 + e2;
+  if (!(det != 0) || !std::isfinite(det)) return std::nullopt;
+
+  // Compute the scaled distance and reject hits outside (0, t_max) before dividing.
+  const float t_scaled = e0 * (az * ray.sz) + e1 * (bz * ray.sz) + e2 * (cz * ray.sz);
+  if (det < 0 && (t_scaled >= 0 || t_scaled < t_max * det)) return std::nullopt;
+  if (det > 0 && (t_scaled <= 0 || t_scaled > t_max * det)) return std::nullopt;
+
+  const float inv_det = 1 / det;
+  const float t = t_scaled * inv_det;
+  if (!(t > 0) || !std::isfinite(t)) return std::nullopt;
+  return TriangleHit{t, e1 * inv_det, e2 * inv_det};
+}
 
 /// The hit of `ray` with triangle (p0, p1, p2) for t in (0, t_max), or nothing.
 /// Never reports a hit for NaN/Inf input or a degenerate (zero-area) triangle.

@@ -40,32 +40,54 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random
   // Shade with the normal that faces the viewer.
   const Vector3 wo = normalize(-ray.direction);
   const Normal3 n = face_forward(si.shading_normal, wo);
-  return direct_light(si, n, wo, material, counters) +
+  return direct_light(si, n, wo, material, random, counters) +
          secondary_light(si, n, wo, material, depth, random, counters);
 }
 
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Normal3& n,
                                       const Vector3& wo, const Material& material,
-                                      RayCounters& counters) const {
+                                      RandomStream& random, RayCounters& counters) const {
   const PhongMaterial& phong = phong_of(material);
   Color result = world_.ambient * phong.kd;
   for (const Light& light : world_.lights) {
-    const PointLight& point = std::get<PointLight>(light);
-    const Vector3 to_light = point.position - si.point;
-    const float distance = length(to_light);
-    if (!(distance > 0)) continue;
-    const Vector3 l = to_light / distance;
-    const float n_dot_l = dot(n, l);
-    if (n_dot_l <= 0) continue;  // the light is behind the surface
-    ++counters.shadow;
-    if (accel_.occluded(spawn_ray_to(si, point.position), kShadowTMax)) continue;
-    // Phong's mirror direction r of the light about n, compared with the view direction.
-    const Vector3 r = Vector3(n) * (2 * n_dot_l) - l;
-    const float r_dot_v = std::max(0.f, dot(r, wo));
-    const Color reflectance = phong.kd * n_dot_l + phong.ks * std::pow(r_dot_v, phong.shininess);
-    result += reflectance * point.colour * point.attenuation(distance);
+    if (const auto* point = std::get_if<PointLight>(&light)) {
+      const float distance = length(point->position - si.point);
+      result += light_sample(si, n, wo, phong, point->position, point->colour * point->attenuation(distance), counters);
+      continue;
+    }
+    // Compute the mean over an N×N jittered grid on the area light (its centre when N = 1,
+    // which gives the hard shadow of a point light there).
+    const auto& area = std::get<AreaLight>(light);
+    const int samples = std::max(1, settings_.area_light_samples);
+    Color sum;
+    for (int j = 0; j < samples; ++j)
+      for (int i = 0; i < samples; ++i) {
+        const float jitter_s = samples == 1 ? 0.5f : random.uniform();
+        const float jitter_t = samples == 1 ? 0.5f : random.uniform();
+        const Point3 p = area.point_at((float(i) + jitter_s) / float(samples), (float(j) + jitter_t) / float(samples));
+        sum += light_sample(si, n, wo, phong, p, area.colour * area.attenuation(length(p - si.point)), counters);
+      }
+    result += sum / float(samples * samples);
   }
   return result;
+}
+
+Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Normal3& n,
+                                      const Vector3& wo, const PhongMaterial& phong,
+                                      const Point3& light_point, const Color& intensity,
+                                      RayCounters& counters) const {
+  const Vector3 to_light = light_point - si.point;
+  const float distance = length(to_light);
+  if (!(distance > 0)) return {};
+  const Vector3 l = to_light / distance;
+  const float n_dot_l = dot(n, l);
+  if (n_dot_l <= 0) return {};  // the light is behind the surface
+  ++counters.shadow;
+  if (accel_.occluded(spawn_ray_to(si, light_point), kShadowTMax)) return {};
+  // Phong's mirror direction r of the light about n, compared with the view direction.
+  const Vector3 r = Vector3(n) * (2 * n_dot_l) - l;
+  const float r_dot_v = std::max(0.f, dot(r, wo));
+  return (phong.kd * n_dot_l + phong.ks * std::pow(r_dot_v, phong.shininess)) * intensity;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,

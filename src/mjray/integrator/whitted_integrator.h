@@ -15,6 +15,7 @@ namespace mjray {
 struct IntegratorSettings {
   int max_reflection_depth = 8;  ///< reflection, glossy and Fresnel reflection rays
   int max_refraction_depth = 8;  ///< transmission rays
+  int area_light_samples = 1;    ///< -s: N×N jittered shadow rays per area light
 };
 
 /// Rays cast, by kind; each thread keeps its own and they are summed at the end.
@@ -50,7 +51,12 @@ class WhittedIntegrator {
   Color trace(const Ray& ray, Depth depth, RandomStream& random, RayCounters& counters) const;
   /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
   Color direct_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
-                     const Material& material, RayCounters& counters) const;
+                     const Material& material, RandomStream& random, RayCounters& counters) const;
+  /// The Phong reflection of one light sample at `light_point`, or black when it is behind
+  /// the surface or in shadow.
+  Color light_sample(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
+                     const PhongMaterial& phong, const Point3& light_point, const Color& intensity,
+                     RayCounters& counters) const;
   /// Light arriving by reflection and refraction: the hook that the materials of the
   /// original project's extensions plug into. Plain Phong materials add nothing.
   Color secondary_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,

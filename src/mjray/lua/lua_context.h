@@ -59,6 +59,8 @@ void set_context(lua_State* L, LoaderContext* ctx);
 
 /// Defines the `gr` table and the userdata types.
 void register_gr(lua_State* L);
+/// Adds the original project's extensions (materials, area lights, extended meshes) to `gr`.
+void register_extensions(lua_State* L);
 /// Adds what CS 488 scripts of both course generations expect: unpack, string.gfind,
 /// the scene folder on the require path, and a built-in readobj module.
 void install_compatibility(lua_State* L);

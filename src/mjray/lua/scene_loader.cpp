@@ -111,6 +111,7 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   lua::install_path_resolution(L);
   if (!options.unsafe_lua) lua::install_sandbox(L);
   lua::register_gr(L);
+  lua::register_extensions(L);
 
   std::error_code ec;
   if (!std::filesystem::exists(script, ec))

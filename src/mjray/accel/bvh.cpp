@@ -1,0 +1,134 @@
+#include "mjray/accel/bvh.h"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+// GCC on x86 compiles an AVX variant of traversal beside the baseline one (#pragma GCC
+// target), picked at run time, so the default build needs no -march flag.
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__clang__)
+#define MJRAY_BVH_HAS_AVX 1
+#include <immintrin.h>
+#else
+#define MJRAY_BVH_HAS_AVX 0
+#endif
+
+#include "mjray/accel/bvh_builder.h"
+#include "mjray/geometry/triangle.h"
+
+namespace mjray {
+
+namespace {
+
+// The builder's binary depth stays under 64 and collapsing never deepens it; each wide
+// node pushes at most kBvhWidth − 1 entries.
+constexpr int kStackSize = (kBvhWidth - 1) * 64 + 1;
+
+// Widens the far slab distance by 2γ₃ (pbrt-v4) so rounding never culls a box the ray
+// actually touches.
+constexpr float kGamma3 = 3 * std::numeric_limits<float>::epsilon() * 0.5f /
+                          (1 - 3 * std::numeric_limits<float>::epsilon() * 0.5f);
+constexpr float kFarScale = 1 + 2 * kGamma3;
+
+bool is_valid_ray(const Ray& ray, float t_max) {
+  return is_finite(ray.origin) && is_finite(ray.direction) && t_max > 0;
+}
+
+/// A pending child: a node (count 0) or a leaf, and where the ray enters its box.
+struct StackEntry {
+  uint32_t child;
+  uint32_t count;
+  float t_enter;
+};
+
+/// What traversal reads of a Bvh.
+struct TraversalView {
+  const BvhWideNode* nodes;
+  const LeafPrimitive* leaves;
+  const World* world;
+  uint32_t triangle_count;
+};
+
+namespace baseline {
+#define MJRAY_BVH_AVX 0
+#include "mjray/accel/bvh_traversal_impl.h"
+#undef MJRAY_BVH_AVX
+}  // namespace baseline
+
+#if MJRAY_BVH_HAS_AVX
+#pragma GCC push_options
+#pragma GCC target("avx")
+namespace avx {
+#define MJRAY_BVH_AVX 1
+#include "mjray/accel/bvh_traversal_impl.h"
+#undef MJRAY_BVH_AVX
+}  // namespace avx
+#pragma GCC pop_options
+#endif
+
+bool cpu_has_avx() {
+#if MJRAY_BVH_HAS_AVX
+  return __builtin_cpu_supports("avx");
+#else
+  return false;
+#endif
+}
+
+}  // namespace
+
+Bvh::Bvh(const World& world, int threads, BvhSimd simd)
+    : world_(world),
+      triangle_count_(uint32_t(world.triangles.size())),
+      use_avx_(simd == BvhSimd::kBest && cpu_has_avx()) {
+  // Compute primitive bounds, build the binary tree, widen it, then copy the triangles
+  // into leaf order.
+  std::vector<Bounds3> prim_bounds(world.primitive_count());
+  for (uint32_t prim = 0; prim < prim_bounds.size(); ++prim) prim_bounds[prim] = world.primitive_bounds(prim);
+  const BvhBuildResult built = build_bvh(prim_bounds, {.threads = threads});
+  nodes_ = collapse_to_wide(built.nodes);
+  leaf_prims_.resize(built.order.size());
+  for (size_t i = 0; i < built.order.size(); ++i) {
+    LeafPrimitive& leaf = leaf_prims_[i];
+    leaf.prim = built.order[i];
+    if (world.is_triangle(leaf.prim)) {
+      const auto v = world.triangle_vertices(leaf.prim);
+      leaf.p0 = std::bit_cast<std::array<float, 3>>(v[0]);
+      leaf.p1 = std::bit_cast<std::array<float, 3>>(v[1]);
+      leaf.p2 = std::bit_cast<std::array<float, 3>>(v[2]);
+    } else {
+      leaf.p0 = leaf.p1 = leaf.p2 = {0, 0, 0};
+    }
+  }
+  if (!built.nodes.empty()) {
+    const BvhNode& root = built.nodes.front();
+    bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
+  }
+}
+
+size_t Bvh::memory_bytes() const {
+  return nodes_.size() * sizeof(BvhWideNode) + leaf_prims_.size() * sizeof(LeafPrimitive);
+}
+
+template <bool kAnyHit>
+bool Bvh::trace(const Ray& ray, float t_max, Hit* hit) const {
+  if (nodes_.empty() || !is_valid_ray(ray, t_max)) return false;
+  const TraversalView view{nodes_.data(), leaf_prims_.data(), &world_, triangle_count_};
+#if MJRAY_BVH_HAS_AVX
+  if (use_avx_) return avx::traverse<kAnyHit>(view, ray, t_max, hit);
+#endif
+  return baseline::traverse<kAnyHit>(view, ray, t_max, hit);
+}
+
+std::optional<Hit> Bvh::intersect(const Ray& ray, float t_max) const {
+  Hit hit{};
+  if (!trace<false>(ray, t_max, &hit)) return std::nullopt;
+  return hit;
+}
+
+bool Bvh::occluded(const Ray& ray, float t_max) const { return trace<true>(ray, t_max, nullptr); }
+
+}  // namespace mjray

@@ -1,0 +1,146 @@
+// BVH traversal for one instruction set. Included only by bvh.cpp, once per instruction set
+// inside its own namespace (hence no include guard): with MJRAY_BVH_AVX 0 for the baseline
+// build (SSE2, or plain C++ elsewhere), and with MJRAY_BVH_AVX 1 under
+// `#pragma GCC target("avx")`, chosen at run time. AVX has no fused multiply-add, so the
+// inlined watertight test computes bit for bit what World::intersect_primitive computes.
+// Expects from the including file: kFarScale, kStackSize, StackEntry, TraversalView.
+
+/// What the slab tests need of a ray, splatted across SIMD lanes once per ray.
+struct BoxRay {
+#if MJRAY_BVH_AVX
+  using Lanes = __m256;
+  static Lanes splat(float x) { return _mm256_set1_ps(x); }
+#elif defined(__SSE2__)
+  using Lanes = __m128;
+  static Lanes splat(float x) { return _mm_set1_ps(x); }
+#else
+  using Lanes = std::array<float, 4>;
+  static Lanes splat(float x) { return {x, x, x, x}; }
+#endif
+  Lanes origin[3];
+  Lanes inv_dir[3];
+  Lanes far_scale;
+  size_t near_row[3];  // row of BvhWideNode::bounds that the ray enters through, per axis
+  size_t far_row[3];
+
+  explicit BoxRay(const Ray& ray) {
+    for (int a = 0; a < 3; ++a) {
+      const float d = ray.direction[a];
+      const bool negative = std::signbit(d);  // −0 counts as negative, matching 1/−0 = −∞
+      origin[a] = splat(ray.origin[a]);
+      inv_dir[a] = splat(1 / d);  // ±inf for a zero component
+      near_row[a] = size_t(negative ? a + 3 : a);
+      far_row[a] = size_t(negative ? a : a + 3);
+    }
+    far_scale = splat(kFarScale);
+  }
+};
+
+// Slab test of a node's children against t in [0, t_max]: a bit per child hit, and each
+// child's entry distance. A slab distance is NaN only for a zero direction component with
+// the origin on the slab plane (0·∞); the reductions keep their other operand then (as
+// max/min instructions do for NaN in the first operand), so such a slab does not cull: a
+// ray lying in a box's face may still hit what lies on it.
+inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_max,
+                             std::array<float, kBvhWidth>& t_enter) {
+  const auto& b = node.bounds;
+  unsigned mask = 0;
+#if MJRAY_BVH_AVX
+  static_assert(kBvhWidth == 8);
+  const auto slab = [&](size_t row, int a) {
+    return _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[row].data()), r.origin[a]), r.inv_dir[a]);
+  };
+  const __m256 t_near = _mm256_max_ps(
+      slab(r.near_row[0], 0), _mm256_max_ps(slab(r.near_row[1], 1), _mm256_max_ps(slab(r.near_row[2], 2), _mm256_setzero_ps())));
+  const __m256 t_far = _mm256_min_ps(
+      slab(r.far_row[0], 0), _mm256_min_ps(slab(r.far_row[1], 1), _mm256_min_ps(slab(r.far_row[2], 2), _mm256_set1_ps(t_max))));
+  _mm256_storeu_ps(t_enter.data(), t_near);
+  mask = unsigned(_mm256_movemask_ps(_mm256_cmp_ps(t_near, _mm256_mul_ps(t_far, r.far_scale), _CMP_LE_OQ)));
+#elif defined(__SSE2__)
+  for (size_t g = 0; g < kBvhWidth; g += 4) {
+    const auto slab = [&](size_t row, int a) {
+      return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&b[row][g]), r.origin[a]), r.inv_dir[a]);
+    };
+    const __m128 t_near = _mm_max_ps(
+        slab(r.near_row[0], 0), _mm_max_ps(slab(r.near_row[1], 1), _mm_max_ps(slab(r.near_row[2], 2), _mm_setzero_ps())));
+    const __m128 t_far = _mm_min_ps(
+        slab(r.far_row[0], 0), _mm_min_ps(slab(r.far_row[1], 1), _mm_min_ps(slab(r.far_row[2], 2), _mm_set1_ps(t_max))));
+    _mm_storeu_ps(&t_enter[g], t_near);
+    mask |= unsigned(_mm_movemask_ps(_mm_cmple_ps(t_near, _mm_mul_ps(t_far, r.far_scale)))) << g;
+  }
+#else
+  for (size_t i = 0; i < kBvhWidth; ++i) {
+    float t_near = 0, t_far = t_max;
+    for (int a = 0; a < 3; ++a) {
+      const float t0 = (b[r.near_row[a]][i] - r.origin[a][0]) * r.inv_dir[a][0];
+      const float t1 = (b[r.far_row[a]][i] - r.origin[a][0]) * r.inv_dir[a][0];
+      t_near = t0 > t_near ? t0 : t_near;
+      t_far = t1 < t_far ? t1 : t_far;
+    }
+    t_enter[i] = t_near;
+    if (t_near <= t_far * kFarScale) mask |= 1u << i;
+  }
+#endif
+  return mask;
+}
+
+/// Closest hit (kAnyHit false, written to *hit) or any hit for t in (0, t_max); returns
+/// whether there was one. Children are visited nearest entry first, and popped entries the
+/// ray cannot reach before its current nearest hit are skipped.
+template <bool kAnyHit>
+bool traverse(const TraversalView& bvh, const Ray& ray, float t_max, Hit* hit) {
+  const BoxRay box_ray(ray);
+  const WatertightRay tri_ray(ray);
+  bool found = false;
+  StackEntry stack[kStackSize];
+  int top = 0;
+  StackEntry current{0, 0, 0};
+  for (;;) {
+    if (current.count == 0) {
+      const BvhWideNode& node = bvh.nodes[current.child];
+      std::array<float, kBvhWidth> t_enter;
+      unsigned mask = hit_children(node, box_ray, t_max, t_enter);
+      if (mask != 0) {
+        const auto entry = [&](int i) {
+          return StackEntry{node.child[size_t(i)], node.count[size_t(i)], t_enter[size_t(i)]};
+        };
+        current = entry(std::countr_zero(mask));
+        mask &= mask - 1;
+        // Keep the nearest as `current`; the rest go on the stack sorted so that nearer
+        // ones are popped first (insertion into the few entries pushed here).
+        const int base = top;
+        for (; mask != 0; mask &= mask - 1) {
+          StackEntry e = entry(std::countr_zero(mask));
+          if (e.t_enter < current.t_enter) std::swap(e, current);
+          int j = top++;
+          for (; j > base && stack[j - 1].t_enter < e.t_enter; --j) stack[j] = stack[j - 1];
+          stack[j] = e;
+        }
+        continue;
+      }
+    } else {
+      for (uint32_t i = current.child, end = current.child + current.count; i < end; ++i) {
+        const LeafPrimitive& leaf = bvh.leaves[i];
+        if (leaf.prim < bvh.triangle_count) {
+          const auto h = intersect_triangle(tri_ray, t_max, leaf.p0, leaf.p1, leaf.p2);
+          if (!h) continue;
+          if constexpr (kAnyHit) return true;
+          t_max = h->t;
+          *hit = {h->t, leaf.prim, h->b1, h->b2};
+        } else {
+          const auto h = bvh.world->intersect_primitive(leaf.prim, ray, t_max);
+          if (!h) continue;
+          if constexpr (kAnyHit) return true;
+          t_max = h->t;
+          *hit = *h;
+        }
+        found = true;
+      }
+    }
+    // Pop the next entry the ray can still reach before its nearest hit.
+    do {
+      if (top == 0) return found;
+      current = stack[--top];
+    } while (current.t_enter > t_max * kFarScale);
+  }
+}

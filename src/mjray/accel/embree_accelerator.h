@@ -1,0 +1,45 @@
+#pragma once
+/// Intel Embree 3 behind the Accelerator seam. The Embree API stays inside this file pair:
+/// the header names its handles only as opaque forward declarations.
+
+#include <atomic>
+#include <cstdint>
+
+#include "mjray/accel/accelerator.h"
+#include "mjray/scene/world.h"
+
+struct RTCDeviceTy;
+struct RTCSceneTy;
+
+namespace mjray {
+
+/// Embree's high-quality BVH over the World: triangles as one native triangle geometry (Embree
+/// primID = mjray primitive id), spheres and cubes as one user geometry whose callbacks call
+/// World::intersect_primitive, so shapes hit exactly as with every other accelerator.
+class EmbreeAccelerator final : public Accelerator {
+ public:
+  /// Builds over `world` (which must outlive this); `threads` build threads, 0 = all cores.
+  /// Throws SceneError when Embree cannot create a device or build the scene.
+  explicit EmbreeAccelerator(const World& world, int threads = 0);
+  ~EmbreeAccelerator() override;
+  EmbreeAccelerator(const EmbreeAccelerator&) = delete;
+  EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
+
+  std::optional<Hit> intersect(const Ray& ray, float t_max) const override;
+  bool occluded(const Ray& ray, float t_max) const override;
+  Bounds3 bounds() const override { return bounds_; }
+  std::string_view name() const override { return "embree"; }
+  /// Bytes Embree's device holds (its memory monitor), which is mostly the scene's BVH.
+  size_t memory_bytes() const override;
+
+ private:
+  void release();
+
+  const World& world_;
+  Bounds3 bounds_;
+  RTCDeviceTy* device_ = nullptr;
+  RTCSceneTy* scene_ = nullptr;
+  std::atomic<int64_t> device_bytes_{0};  ///< updated by Embree's memory monitor callback
+};
+
+}  // namespace mjray

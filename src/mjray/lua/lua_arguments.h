@@ -1,0 +1,69 @@
+#pragma once
+/// Reading gr.* arguments from the Lua stack: each reader throws ArgumentError with a message
+/// naming the function, the argument and what was found (`guarded` adds the file:line).
+
+#include <array>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <string>
+
+extern "C" {
+#include <lauxlib.h>
+#include <lua.h>
+}
+
+#include "mjray/core/color.h"
+#include "mjray/core/vector.h"
+#include "mjray/lua/lua_context.h"
+
+namespace mjray::lua {
+
+inline constexpr const char* kNodeType = "gr.node";
+inline constexpr const char* kMaterialType = "gr.material";
+inline constexpr const char* kLightType = "gr.light";
+inline constexpr const char* kTextureType = "gr.texture";
+
+/// Pushes a userdata owning `value`, with the metatable of `type`.
+template <class T>
+void push_shared(lua_State* L, std::shared_ptr<T> value, const char* type) {
+  void* memory = lua_newuserdatauv(L, sizeof(std::shared_ptr<T>), 0);
+  new (memory) std::shared_ptr<T>(std::move(value));
+  luaL_setmetatable(L, type);
+}
+
+/// The shared_ptr inside a userdata of `type`, or null.
+template <class T>
+std::shared_ptr<T>* test_shared(lua_State* L, int index, const char* type) {
+  return static_cast<std::shared_ptr<T>*>(luaL_testudata(L, index, type));
+}
+
+/// __gc of a push_shared userdata.
+template <class T>
+int collect_shared(lua_State* L) {
+  auto* p = static_cast<std::shared_ptr<T>*>(lua_touserdata(L, 1));
+  if (p) p->~shared_ptr<T>();
+  return 0;
+}
+
+/// How the value at `index` reads in a message: "nothing", "nil", "a number", "the string 'x'",
+/// "an empty table", "a table of 2 values", "a gr.light".
+std::string describe(lua_State* L, int index);
+
+/// Throws "fn: argument N (what) must be EXPECTED, got ..."; methods ("node:translate")
+/// number their arguments after self.
+[[noreturn]] void bad_argument(lua_State* L, const char* fn, int index, const char* what, const char* expected);
+
+std::string arg_string(lua_State* L, int index, const char* fn, const char* what);
+double arg_number(lua_State* L, int index, const char* fn, const char* what);
+/// Reads the {x, y, z} table at `index` into `out`; returns "" or what was found instead.
+std::string read_tuple3(lua_State* L, int index, std::array<double, 3>& out);
+std::array<double, 3> arg_tuple3(lua_State* L, int index, const char* fn, const char* what);
+Point3 arg_point(lua_State* L, int index, const char* fn, const char* what);
+Vector3 arg_vector(lua_State* L, int index, const char* fn, const char* what);
+Color arg_color(lua_State* L, int index, const char* fn, const char* what);
+std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, const char* what);
+/// A number as a person writes it: "0", "2.5", "180".
+std::string format_number(double value);
+
+}  // namespace mjray::lua

@@ -1,0 +1,377 @@
+#include "mjray/accel/bvh.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mjray/accel/brute_force.h"
+#include "mjray/accel/make_accelerator.h"
+#include "mjray/io/obj_loader.h"
+#include "support/test_paths.h"
+
+namespace mjray {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// A World holding one mesh whose triangles are all primitives, as flatten makes it.
+World mesh_world(const std::vector<Point3>& positions, const std::vector<std::array<int, 3>>& faces) {
+  World world;
+  WorldMesh mesh;
+  mesh.positions = positions;
+  for (const auto& f : faces) mesh.triangles.push_back({ObjCorner{f[0]}, ObjCorner{f[1]}, ObjCorner{f[2]}});
+  world.meshes.push_back(std::move(mesh));
+  for (uint32_t face = 0; face < faces.size(); ++face) world.triangles.push_back({0, face});
+  return world;
+}
+
+World obj_world(const std::filesystem::path& path) {
+  const ObjMesh obj = load_obj(path);
+  World world;
+  WorldMesh mesh;
+  mesh.positions = obj.positions;
+  mesh.triangles = obj.triangles;
+  world.meshes.push_back(std::move(mesh));
+  for (uint32_t face = 0; face < obj.triangles.size(); ++face) world.triangles.push_back({0, face});
+  return world;
+}
+
+// Spheres and cubes under rotations, non-uniform scales and translations, some overlapping.
+void add_shapes(World& world, int count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0, 1);
+  for (int i = 0; i < count; ++i) {
+    const Transform placed =
+        Transform::translate({unit(rng) * 10 - 5, unit(rng) * 10 - 5, unit(rng) * 10 - 5}) *
+        Transform::rotate(0, unit(rng) * 360) * Transform::rotate(1, unit(rng) * 360) *
+        Transform::rotate(2, unit(rng) * 360) *
+        Transform::scale(0.2f + unit(rng) * 1.5f, 0.2f + unit(rng) * 0.8f, 0.1f + unit(rng) * 2);
+    world.shapes.push_back({i % 2 == 0 ? NodeShape::kSphere : NodeShape::kCube, placed, 0});
+  }
+}
+
+Point3 lerp(const Bounds3& b, float x, float y, float z) {
+  const Vector3 d = b.diagonal();
+  return {b.lo.x + d.x * x, b.lo.y + d.y * y, b.lo.z + d.z * z};
+}
+
+// Rays from outside the (enlarged) bounds through random points inside them, plus rays
+// that start inside the bounds in random directions.
+std::vector<Ray> random_rays(const Bounds3& bounds, int count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0, 1), signed_unit(-1, 1);
+  const float radius = length(bounds.diagonal());
+  std::vector<Ray> rays;
+  for (int i = 0; i < count; ++i) {
+    const Point3 target = lerp(bounds, unit(rng), unit(rng), unit(rng));
+    if (i % 3 == 2) {
+      Vector3 d{signed_unit(rng), signed_unit(rng), signed_unit(rng)};
+      rays.push_back({target, d});
+      continue;
+    }
+    Vector3 offset = normalize(Vector3(signed_unit(rng), signed_unit(rng), signed_unit(rng)));
+    const Point3 origin = bounds.centre() + offset * radius;
+    rays.push_back({origin, (target - origin) * (0.5f + unit(rng))});  // not unit length
+  }
+  return rays;
+}
+
+// A pinhole camera's rays, eye in front of the bounds, looking at their centre.
+std::vector<Ray> camera_rays(const Bounds3& bounds, int width, int height) {
+  const float radius = length(bounds.diagonal()) * 0.5f;
+  const Point3 eye = bounds.centre() + Vector3(0.4f, 0.3f, 2.0f) * radius;
+  const Vector3 forward = normalize(bounds.centre() - eye);
+  const Vector3 right = normalize(cross(forward, {0, 1, 0}));
+  const Vector3 up = cross(right, forward);
+  std::vector<Ray> rays;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float px = ((x + 0.5f) / width * 2 - 1) * 0.5f, py = (1 - (y + 0.5f) / height * 2) * 0.5f;
+      rays.push_back({eye, normalize(forward + right * px + up * py)});
+    }
+  return rays;
+}
+
+// Rays along ±x, ±y, ±z (other components exactly zero), some from origins on vertex
+// coordinates so that they run exactly in bounding planes.
+std::vector<Ray> axis_rays(const World& world, int count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0, 1);
+  const Bounds3 b = world.bounds();
+  const Vector3 pad = b.diagonal() * 0.1f;
+  const Bounds3 outer{b.lo - pad, b.hi + pad};
+  std::vector<Ray> rays;
+  for (int i = 0; i < count; ++i) {
+    const int axis = i % 3;
+    const bool negative = (i / 3) % 2 == 1;
+    Point3 origin = lerp(outer, unit(rng), unit(rng), unit(rng));
+    if (i % 4 == 0 && !world.meshes.empty() && !world.meshes[0].positions.empty()) {
+      const auto& positions = world.meshes[0].positions;
+      const Point3& v = positions[size_t(unit(rng) * float(positions.size() - 1))];
+      origin[(axis + 1) % 3] = v[(axis + 1) % 3];
+    }
+    origin[axis] = negative ? outer.hi[axis] : outer.lo[axis];
+    Vector3 d;
+    d[axis] = negative ? -1.f : 1.f;
+    rays.push_back({origin, d});
+  }
+  return rays;
+}
+
+// Checks the BVH against the brute-force oracle on every ray: same primitive and t, with the
+// exact barycentrics World::intersect_primitive gives, and occluded() consistent with
+// intersect() both unbounded and cut off before the hit. Where two primitives tie (a ray
+// through an edge they share, or coplanar faces) the watertight test's rounding decides,
+// and its outcome depends on the order of the tests: either primitive is accepted when the
+// two t agree to a few ulps and the BVH's hit is exactly what its primitive reports.
+void expect_agrees(const World& world, const Bvh& bvh, const std::vector<Ray>& rays, const std::string& what) {
+  const BruteForce oracle(world);
+  int mismatches = 0;
+  for (size_t i = 0; i < rays.size() && mismatches < 5; ++i) {
+    const Ray& ray = rays[i];
+    const auto expected = oracle.intersect(ray, kInfinity);
+    const auto actual = bvh.intersect(ray, kInfinity);
+    const std::string where = what + " ray " + std::to_string(i);
+    if (expected.has_value() != actual.has_value()) {
+      ADD_FAILURE() << where << ": oracle " << (expected ? "hits" : "misses") << ", bvh "
+                    << (actual ? "hits" : "misses");
+      ++mismatches;
+      continue;
+    }
+    EXPECT_EQ(bvh.occluded(ray, kInfinity), actual.has_value()) << where;
+    if (!expected) continue;
+    EXPECT_NEAR(actual->t, expected->t, 1e-4f * expected->t) << where;
+    if (expected->prim == actual->prim) {
+      EXPECT_EQ(actual->u, expected->u) << where;
+      EXPECT_EQ(actual->v, expected->v) << where;
+    } else if (std::abs(actual->t - expected->t) > 1e-6f * expected->t) {
+      ADD_FAILURE() << where << ": prim " << actual->prim << " at t " << actual->t << ", oracle prim "
+                    << expected->prim << " at t " << expected->t;
+      ++mismatches;
+    } else {
+      const auto own = world.intersect_primitive(actual->prim, ray, kInfinity);
+      ASSERT_TRUE(own.has_value()) << where;
+      EXPECT_EQ(own->t, actual->t) << where;
+      EXPECT_EQ(own->u, actual->u) << where;
+      EXPECT_EQ(own->v, actual->v) << where;
+    }
+    const float cut = expected->t * 0.5f;
+    EXPECT_EQ(bvh.occluded(ray, cut), bvh.intersect(ray, cut).has_value()) << where;
+    EXPECT_EQ(bvh.occluded(ray, cut), oracle.occluded(ray, cut)) << where;
+  }
+  EXPECT_EQ(mismatches, 0) << what;
+}
+
+void expect_agrees_all_kinds(const World& world, int random_count, int camera_side, const std::string& what) {
+  const Bvh bvh(world, 0);
+  const Bounds3 b = world.bounds();
+  expect_agrees(world, bvh, random_rays(b, random_count, 7), what + " random");
+  expect_agrees(world, bvh, camera_rays(b, camera_side, camera_side), what + " camera");
+  expect_agrees(world, bvh, axis_rays(world, random_count / 4, 11), what + " axis-parallel");
+}
+
+TEST(BvhOracle, AgreesWithBruteForceOnRealMeshes) {
+  MJRAY_REQUIRE_SHARED(shared);
+  // About 80k rays over four meshes (130k with the tests below), sized so the oracle stays fast.
+  expect_agrees_all_kinds(obj_world(shared / "models/small/teapot_low_npm.obj"), 12000, 80, "teapot");
+  expect_agrees_all_kinds(obj_world(shared / "models/small/bunny_low_npm.obj"), 4000, 50, "bunny");
+  expect_agrees_all_kinds(obj_world(shared / "models/medium/suzanne.obj"), 10000, 80, "suzanne");
+  expect_agrees_all_kinds(obj_world(shared / "models/small/cornell/cornell_box.obj"), 20000, 100, "cornell");
+}
+
+TEST(BvhOracle, AgreesWithBruteForceOnTransformedShapes) {
+  World world;
+  add_shapes(world, 120, 3);
+  expect_agrees_all_kinds(world, 16000, 100, "shapes");
+}
+
+TEST(BvhOracle, AgreesWithBruteForceOnMeshesMixedWithShapes) {
+  MJRAY_REQUIRE_SHARED(shared);
+  World world = obj_world(shared / "models/small/teapot_low_npm.obj");
+  add_shapes(world, 40, 5);
+  expect_agrees_all_kinds(world, 12000, 60, "teapot+shapes");
+}
+
+TEST(BvhOracle, AgreesWithBruteForceOnALargerMesh) {
+  MJRAY_REQUIRE_SHARED(shared);
+  const World world = obj_world(shared / "models/medium/dragon_vrip_res4.obj");
+  const Bvh bvh(world, 2);
+  expect_agrees(world, bvh, random_rays(world.bounds(), 1500, 13), "dragon random");
+}
+
+TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
+  MJRAY_REQUIRE_SHARED(shared);
+  const World world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
+  const Bvh serial(world, 1), parallel(world, 2);
+  ASSERT_EQ(serial.nodes().size(), parallel.nodes().size());
+  EXPECT_EQ(std::memcmp(serial.nodes().data(), parallel.nodes().data(),
+                        serial.nodes().size() * sizeof(BvhWideNode)), 0);
+  ASSERT_EQ(serial.leaf_primitives().size(), parallel.leaf_primitives().size());
+  for (size_t i = 0; i < serial.leaf_primitives().size(); ++i)
+    ASSERT_EQ(serial.leaf_primitives()[i].prim, parallel.leaf_primitives()[i].prim) << i;
+}
+
+TEST(BvhBuild, MemoryStaysWithinBudgetPerTriangle) {
+  MJRAY_REQUIRE_SHARED(shared);
+  const World world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
+  const Bvh bvh(world, 0);
+  EXPECT_EQ(bvh.leaf_primitives().size(), world.triangles.size());
+  EXPECT_LE(double(bvh.memory_bytes()) / double(world.triangles.size()), 70.0);
+  EXPECT_GT(bvh.memory_bytes(), world.triangles.size() * sizeof(LeafPrimitive));
+}
+
+TEST(BvhBuild, BoundsMatchTheWorld) {
+  MJRAY_REQUIRE_SHARED(shared);
+  const World world = obj_world(shared / "models/small/bunny_low_npm.obj");
+  const Bvh bvh(world, 0);
+  EXPECT_EQ(bvh.bounds().lo, world.bounds().lo);
+  EXPECT_EQ(bvh.bounds().hi, world.bounds().hi);
+  EXPECT_EQ(bvh.name(), "bvh");
+}
+
+TEST(BvhBuild, MakeAcceleratorBuildsTheBvh) {
+  const World world = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  const auto accel = make_accelerator(world, {.kind = "bvh", .threads = 1});
+  EXPECT_EQ(accel->name(), "bvh");
+  EXPECT_TRUE(accel->intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, kInfinity).has_value());
+}
+
+TEST(BvhEdgeCases, EmptyWorldHasNoHitsAndEmptyBounds) {
+  const World world;
+  const Bvh bvh(world, 0);
+  EXPECT_TRUE(bvh.bounds().empty());
+  EXPECT_TRUE(bvh.nodes().empty());
+  EXPECT_FALSE(bvh.intersect({{0, 0, 0}, {0, 0, 1}}, kInfinity).has_value());
+  EXPECT_FALSE(bvh.occluded({{0, 0, 0}, {0, 0, 1}}, kInfinity));
+}
+
+TEST(BvhEdgeCases, OneTriangle) {
+  const World world = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  const Bvh bvh(world, 0);
+  const auto hit = bvh.intersect({{0.25f, 0.5f, 2}, {0, 0, -1}}, kInfinity);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->prim, 0u);
+  EXPECT_FLOAT_EQ(hit->t, 2);
+  EXPECT_FLOAT_EQ(hit->u, 0.25f);
+  EXPECT_FLOAT_EQ(hit->v, 0.5f);
+  EXPECT_FALSE(bvh.intersect({{0.25f, 0.5f, 2}, {0, 0, -1}}, 1.5f).has_value());
+  EXPECT_FALSE(bvh.intersect({{0.75f, 0.75f, 2}, {0, 0, -1}}, kInfinity).has_value());
+  EXPECT_TRUE(bvh.occluded({{0.25f, 0.25f, -1}, {0, 0, 1}}, kInfinity));
+  expect_agrees(world, bvh, random_rays(world.bounds(), 2000, 17), "one triangle");
+}
+
+TEST(BvhEdgeCases, OneSphere) {
+  World world;
+  world.shapes.push_back({NodeShape::kSphere, Transform::translate({1, 2, 3}) * Transform::scale(2, 1, 0.5f), 0});
+  const Bvh bvh(world, 0);
+  const auto hit = bvh.intersect({{1, 2, 10}, {0, 0, -1}}, kInfinity);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->prim, 0u);
+  EXPECT_NEAR(hit->t, 6.5f, 1e-5f);
+  expect_agrees(world, bvh, random_rays(world.bounds(), 2000, 19), "one sphere");
+}
+
+TEST(BvhEdgeCases, ManyIdenticalTriangles) {
+  // All centroids equal: the build must fall back to splitting by count and terminate.
+  const std::vector<Point3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const std::vector<std::array<int, 3>> faces(5000, {0, 1, 2});
+  const World world = mesh_world(positions, faces);
+  const Bvh bvh(world, 2);
+  EXPECT_EQ(bvh.leaf_primitives().size(), faces.size());
+  const auto hit = bvh.intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, kInfinity);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_FLOAT_EQ(hit->t, 1);
+  EXPECT_LT(hit->prim, faces.size());
+  expect_agrees(world, bvh, random_rays(world.bounds(), 300, 23), "identical triangles");
+}
+
+TEST(BvhEdgeCases, DegenerateTrianglesNeverHitAndDoNotDisturbOthers) {
+  // Zero-area triangles (repeated and collinear corners) between ordinary ones.
+  std::vector<Point3> positions;
+  std::vector<std::array<int, 3>> faces;
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<float> unit(0, 1);
+  for (int i = 0; i < 600; ++i) {
+    const int base = int(positions.size());
+    const Point3 p{unit(rng) * 4, unit(rng) * 4, unit(rng) * 4};
+    const Vector3 a{unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f};
+    const Vector3 b{unit(rng) - 0.5f, unit(rng) - 0.5f, unit(rng) - 0.5f};
+    positions.insert(positions.end(), {p, p + a, i % 3 == 0 ? p + a * 2 : (i % 3 == 1 ? p : p + b)});
+    faces.push_back({base, base + 1, base + 2});
+  }
+  const World world = mesh_world(positions, faces);
+  const Bvh bvh(world, 0);
+  const auto rays = random_rays(world.bounds(), 6000, 31);
+  expect_agrees(world, bvh, rays, "degenerate");
+  for (const Ray& ray : rays) {
+    if (const auto hit = bvh.intersect(ray, kInfinity)) {
+      EXPECT_EQ(hit->prim % 3, 2u);
+    }
+  }
+}
+
+TEST(BvhEdgeCases, NonFiniteTrianglesAreHarmless) {
+  // Bounds3 drops NaN coordinates (min/max), so the NaN triangle keeps finite bounds and
+  // stays in; the infinite one is left out. Neither can be hit.
+  std::vector<Point3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                   {kNaN, 0, 0}, {1, 1, 0}, {0, 1, 1},
+                                   {kInfinity, 0, 0}, {1, 0, 1}, {0, 1, -1}};
+  const World world = mesh_world(positions, {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+  const Bvh bvh(world, 0);
+  EXPECT_EQ(bvh.leaf_primitives().size(), 2u);
+  expect_agrees(world, bvh, random_rays({{-1, -1, -1}, {2, 2, 2}}, 2000, 37), "non-finite");
+}
+
+TEST(BvhEdgeCases, NanAndInfiniteRaysMissWithoutCrashing) {
+  MJRAY_REQUIRE_SHARED(shared);
+  World world = obj_world(shared / "models/small/teapot_low_npm.obj");
+  add_shapes(world, 10, 41);
+  const Bvh bvh(world, 0);
+  const Point3 c = world.bounds().centre();
+  const std::vector<Ray> rays = {
+      {{kNaN, 0, 0}, {0, 0, 1}},          {{c.x, c.y, c.z}, {kNaN, 0, 1}},
+      {{c.x, c.y, c.z}, {kNaN, kNaN, kNaN}}, {{kInfinity, 0, 0}, {-1, 0, 0}},
+      {{c.x, c.y, c.z}, {kInfinity, 1, 0}}, {{c.x, c.y, c.z}, {-kInfinity, kInfinity, kInfinity}},
+      {{c.x, c.y, c.z}, {0, 0, 0}},
+  };
+  for (const Ray& ray : rays) {
+    EXPECT_FALSE(bvh.intersect(ray, kInfinity).has_value());
+    EXPECT_FALSE(bvh.occluded(ray, kInfinity));
+  }
+  // A tiny but finite direction is a valid ray: t scales up, the answer must not change.
+  const Ray tiny{{c.x, c.y, c.z + 100}, {0, 1e-32f, -1e-30f}};
+  expect_agrees(world, bvh, {tiny, {tiny.origin, {0, 0, -1e-30f}}}, "tiny direction");
+  const Ray good{{c.x, c.y, c.z + 100}, {0, 0, -1}};
+  EXPECT_FALSE(bvh.intersect(good, kNaN).has_value());
+  EXPECT_FALSE(bvh.intersect(good, 0).has_value());
+  EXPECT_FALSE(bvh.intersect(good, -1).has_value());
+}
+
+TEST(BvhEdgeCases, RaysFromInsideAClosedMeshAlwaysHit) {
+  // A watertight cube of 12 triangles: rays from inside, including through edges and
+  // corners, must hit.
+  const World world = mesh_world(
+      {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+      {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+       {3, 6, 2}, {3, 7, 6}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}});
+  const Bvh bvh(world, 0);
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<float> unit(0.01f, 0.99f), signed_unit(-1, 1);
+  for (int i = 0; i < 5000; ++i) {
+    const Point3 origin{unit(rng), unit(rng), unit(rng)};
+    const Point3 target = i % 2 ? Point3(float(i % 3 == 0), float(i % 5 < 2), signed_unit(rng) > 0)
+                                : Point3(unit(rng), 1, unit(rng));
+    const Ray ray{origin, target - origin};
+    EXPECT_TRUE(bvh.intersect(ray, kInfinity).has_value()) << i;
+    EXPECT_TRUE(bvh.occluded(ray, kInfinity)) << i;
+  }
+  expect_agrees(world, bvh, axis_rays(world, 2000, 47), "cube");
+}
+
+}  // namespace
+}  // namespace mjray
