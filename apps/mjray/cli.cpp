@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include <charconv>
+#include <cstdlib>
 #include <functional>
 #include <map>
 
@@ -31,6 +32,7 @@ options:
   -o                   uniform grid of the "optimal" size 3*cbrt(primitives); overrides -g
   -s N                 area-light samples: an N x N jittered grid (default 1)
   -a N                 adaptive anti-aliasing with N x N samples in bad pixels (default 0: off)
+  --aa-threshold T     colour difference from a neighbour that makes a pixel bad (default 0.1)
   --accel KIND         acceleration structure: bvh (default), grid, none
   -j, --threads N      worker threads (default: all cores)
   --output FILE        write the (single) image to FILE
@@ -65,6 +67,12 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       {"-j", [&](auto& o, auto& v) { cl.threads = int(parse_integer(o, v, 1, 4096)); }},
       {"--threads", [&](auto& o, auto& v) { cl.threads = int(parse_integer(o, v, 1, 4096)); }},
       {"--seed", [&](auto& o, auto& v) { cl.seed = uint64_t(parse_integer(o, v, 0, kMaxInt * kMaxInt)); }},
+      {"--aa-threshold", [&](auto& o, auto& v) {
+         char* end = nullptr;
+         const double t = std::strtod(v.c_str(), &end);
+         if (v.empty() || *end != '\0' || !(t > 0 && t <= 1)) throw UsageError(o + " expects a number in (0, 1], got '" + v + "'");
+         cl.antialias_threshold = float(t);
+       }},
       {"--output", [&](auto&, auto& v) { cl.output = v; }},
       {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
       {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},

@@ -19,6 +19,7 @@ struct CommandLine {
   bool optimal_grid = false;           // -o
   int area_light_samples = 1;          // -s
   int antialias_samples = 0;           // -a
+  float antialias_threshold = 0.1f;    // --aa-threshold
   std::string accel;                   // --accel; empty = decided by -g/-o or bvh
   int threads = 0;                     // -j
   std::optional<std::filesystem::path> output;  // --output

@@ -63,6 +63,8 @@ void render_job(const CommandLine& cl, const RenderJob& job, double parse_second
   RenderSettings settings;
   settings.threads = cl.threads;
   settings.seed = cl.seed;
+  settings.antialias_samples = cl.antialias_samples;
+  settings.antialias_threshold = cl.antialias_threshold;
   RenderStats stats;
   const Image image = render_image(camera, job.width, job.height, integrator, settings, &stats);
 
@@ -73,11 +75,13 @@ void render_job(const CommandLine& cl, const RenderJob& job, double parse_second
     const double rays_per_second = stats.seconds > 0 ? double(stats.rays.total()) / stats.seconds : 0;
     std::fprintf(stderr,
                  "mjray: wrote %s (%dx%d) | parse %.3fs, build %.3fs (%s), render %.3fs on %d threads | "
-                 "%u primitives | rays: %llu primary, %llu secondary, %llu shadow (%.2f M/s)\n",
+                 "%u primitives | rays: %llu primary, %llu secondary, %llu shadow (%.2f M/s) | "
+                 "%llu pixels supersampled\n",
                  path.string().c_str(), job.width, job.height, parse_seconds, build_seconds,
                  std::string(accel->name()).c_str(), stats.seconds, stats.threads, world.primitive_count(),
                  (unsigned long long)stats.rays.primary, (unsigned long long)stats.rays.secondary,
-                 (unsigned long long)stats.rays.shadow, rays_per_second / 1e6);
+                 (unsigned long long)stats.rays.shadow, rays_per_second / 1e6,
+                 (unsigned long long)stats.pixels_supersampled);
   }
 }
 

@@ -15,6 +15,9 @@ struct RenderSettings {
   int threads = 0;     ///< 0 = all cores
   int tile_size = 16;  ///< pixels per tile side
   uint64_t seed = 0;   ///< --seed: keys every random number
+  int antialias_samples = 0;        ///< -a: N×N jittered samples in bad pixels; 0 = off
+  float antialias_threshold = 0.1f; ///< --aa-threshold: neighbour difference that makes a pixel bad
+  int antialias_max_passes = 4;     ///< passes of adaptive supersampling at most
 };
 
 /// What the render did.
@@ -22,9 +25,12 @@ struct RenderStats {
   RayCounters rays;
   double seconds = 0;
   int threads = 1;
+  uint64_t pixels_supersampled = 0;
+  int antialias_passes = 0;
 };
 
-/// Renders width × height pixels with one primary ray through each pixel centre.
+/// Renders width × height pixels with one primary ray through each pixel centre, then, when
+/// asked, supersamples the pixels adaptive anti-aliasing finds bad.
 Image render_image(const PinholeCamera& camera, int width, int height,
                    const WhittedIntegrator& integrator, const RenderSettings& settings,
                    RenderStats* stats = nullptr);
