@@ -136,34 +136,44 @@ class Builder {
   // The cheapest SAH split over all axes, costs in units of node area (not divided by it,
   // so flat or point-like nodes need no special case).
   Split find_split(uint32_t begin, uint32_t end, const Bounds3& centroids) const {
-    Split best;
+    // Bin the primitives on all three axes in one pass over them.
     const Vector3 extent = centroids.diagonal();
+    std::array<std::array<Bin, kBins>, 3> bins{};
+    std::array<float, 3> lo{}, scale{};
     for (int axis = 0; axis < 3; ++axis) {
-      if (!(extent[axis] > 0)) continue;
-      std::array<Bin, kBins> bins{};
-      const float lo = centroids.lo[axis], scale = bin_scale(centroids, axis);
-      for (uint32_t i = begin; i < end; ++i) {
-        Bin& bin = bins[size_t(bin_of(refs_[i], axis, lo, scale))];
-        bin.box.expand(refs_[i].box);
+      lo[size_t(axis)] = centroids.lo[axis];
+      scale[size_t(axis)] = extent[axis] > 0 ? bin_scale(centroids, axis) : 0;
+    }
+    for (uint32_t i = begin; i < end; ++i) {
+      const BuildRef& ref = refs_[i];
+      for (size_t axis = 0; axis < 3; ++axis) {
+        Bin& bin = bins[axis][size_t(bin_of(ref, int(axis), lo[axis], scale[axis]))];
+        bin.box.expand(ref.box);
         ++bin.count;
       }
+    }
+
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(extent[axis] > 0)) continue;
+      const auto& axis_bins = bins[size_t(axis)];
       // Compute the right-hand areas and counts, then sweep from the left.
       std::array<float, kBins> right_cost{};
       Bounds3 right;
       uint32_t right_count = 0;
       for (int b = kBins - 1; b > 0; --b) {
-        right.expand(bins[size_t(b)].box);
-        right_count += bins[size_t(b)].count;
+        right.expand(axis_bins[size_t(b)].box);
+        right_count += axis_bins[size_t(b)].count;
         right_cost[size_t(b)] = right.surface_area() * float(right_count);
       }
       Bounds3 left;
       uint32_t left_count = 0;
       Bounds3 node;
-      for (const Bin& bin : bins) node.expand(bin.box);
+      for (const Bin& bin : axis_bins) node.expand(bin.box);
       const float traversal = options_.traversal_cost * node.surface_area();
       for (int b = 1; b < kBins; ++b) {
-        left.expand(bins[size_t(b - 1)].box);
-        left_count += bins[size_t(b - 1)].count;
+        left.expand(axis_bins[size_t(b - 1)].box);
+        left_count += axis_bins[size_t(b - 1)].count;
         if (left_count == 0 || left_count == end - begin) continue;
         const float cost = traversal + left.surface_area() * float(left_count) + right_cost[size_t(b)];
         if (cost < best.cost) best = {axis, b, cost};

@@ -3,28 +3,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "mjray/integrator/sampling.h"
 #include "mjray/integrator/spawn_ray.h"
 #include "mjray/material/optics.h"
 
 namespace mjray {
 
-namespace {
-
-/// A unit vector in the cone of directions within acos(cos_max) of `axis`, uniform over its
-/// solid angle, from two uniform numbers.
-Vector3 sample_cone(const Vector3& axis, float cos_max, float u1, float u2) {
-  const float cos_theta = 1 - u1 * (1 - cos_max);
-  const float sin_theta = std::sqrt(std::max(0.f, 1 - cos_theta * cos_theta));
-  const float phi = 2 * std::numbers::pi_v<float> * u2;
-  // Compute an orthonormal frame around the axis (Duff et al. 2017).
-  const float sign = std::copysign(1.f, axis.z);
-  const float a = -1 / (sign + axis.z), b = axis.x * axis.y * a;
-  const Vector3 t1(1 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
-  const Vector3 t2(b, sign + axis.y * axis.y * a, -axis.y);
-  return normalize(t1 * (sin_theta * std::cos(phi)) + t2 * (sin_theta * std::sin(phi)) + axis * cos_theta);
-}
-
-}  // namespace
 
 Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const {
   ++counters.primary;
@@ -47,7 +31,10 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Normal3& n,
                                       const Vector3& wo, const Material& material,
                                       RandomStream& random, RayCounters& counters) const {
-  const PhongMaterial& phong = phong_of(material);
+  // A texture replaces kd at this hit: evaluate it once for all lights (the copy leaves the
+  // texture pointer behind, so threads do not contend on its reference count).
+  const PhongMaterial& base = phong_of(material);
+  const PhongMaterial phong{base.kd_at(si.object_point, si.uv), base.ks, base.shininess};
   Color result = world_.ambient * phong.kd;
   for (const Light& light : world_.lights) {
     if (const auto* point = std::get_if<PointLight>(&light)) {

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "mjray/core/error.h"
+#include "mjray/io/jpeg_reader.h"
 
 namespace mjray {
 namespace fs = std::filesystem;
@@ -381,7 +382,11 @@ Image read_image(const fs::path& path) {
   if (got == sizeof magic && png_sig_cmp(magic, 0, sizeof magic) == 0)
     return read_png(path, file.get());
   if (got >= 2 && magic[0] == 'P' && magic[1] == '6') return read_ppm(path, file.get());
-  fail_read(path, "not a PNG or binary (P6) PPM file");
+  if (got >= 3 && magic[0] == 0xFF && magic[1] == 0xD8 && magic[2] == 0xFF) {
+    if (std::fseek(file.get(), 0, SEEK_SET) != 0) fail_read(path, errno_text(errno));
+    return read_jpeg(path, file.get(), kMaxReadPixels);
+  }
+  fail_read(path, "not a PNG, JPEG or binary (P6) PPM file");
 }
 
 }  // namespace mjray

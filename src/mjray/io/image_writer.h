@@ -1,5 +1,6 @@
 #pragma once
-/// Image output (8-bit PNG and binary PPM), written atomically, and reading those files back.
+/// Image output (8-bit PNG and binary PPM), written atomically, and reading those files (and
+/// JPEG, for textures) back.
 
 #include <cstdint>
 #include <filesystem>
@@ -23,9 +24,10 @@ uint8_t to_8bit(float linear, OutputGamma gamma);
 void write_image(const Image& image, const std::filesystem::path& path,
                  OutputGamma gamma = OutputGamma::kLinear);
 
-/// Reads an 8-bit PNG or PPM back (for tests and resume), format chosen by the file's magic
-/// bytes; throws OutputError("cannot read 'PATH': REASON") on failure. Values are v/255 (no
-/// gamma decoding).
+/// Reads a PNG (any colour type; 16-bit reduced to 8, alpha dropped), an 8-bit binary PPM or a
+/// JPEG (for tests, resume and image textures), format chosen by the file's magic bytes;
+/// throws OutputError("cannot read 'PATH': REASON") on failure. Values are v/255 (no gamma
+/// decoding).
 Image read_image(const std::filesystem::path& path);
 
 }  // namespace mjray

@@ -346,6 +346,7 @@ void register_gr(lua_State* L) {
       {nullptr, nullptr}};
   luaL_newlib(L, gr_functions);
   lua_setglobal(L, "gr");
+  register_textures(L);
 }
 
 }  // namespace mjray::lua

@@ -61,6 +61,9 @@ void set_context(lua_State* L, LoaderContext* ctx);
 void register_gr(lua_State* L);
 /// Adds the original project's extensions (materials, area lights, extended meshes) to `gr`.
 void register_extensions(lua_State* L);
+/// Adds the textures (gr.*texture) to `gr` and set_material_texture to materials; needs
+/// register_gr first.
+void register_textures(lua_State* L);
 /// Adds what CS 488 scripts of both course generations expect: unpack, string.gfind,
 /// the scene folder on the require path, and a built-in readobj module.
 void install_compatibility(lua_State* L);

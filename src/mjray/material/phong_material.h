@@ -1,0 +1,25 @@
+#pragma once
+/// The CS 488 Phong material: diffuse and specular colours and a specular exponent.
+
+#include <memory>
+
+#include "mjray/core/color.h"
+#include "mjray/texture/texture.h"
+
+namespace mjray {
+
+/// gr.material(kd, ks, shininess): the local shading model shared by every material.
+struct PhongMaterial {
+  Color kd;               ///< diffuse reflectance, also scales the ambient light
+  Color ks;               ///< specular reflectance
+  float shininess = 0;    ///< Phong exponent of max(0, r·v)
+  /// material:set_material_texture: when set, replaces kd at each hit (ambient and diffuse).
+  std::shared_ptr<const Texture> texture = nullptr;
+
+  /// The diffuse reflectance at a hit: the texture's colour there, or kd.
+  Color kd_at(const Point3& object_point, const Point2& uv) const {
+    return texture ? evaluate(*texture, object_point, uv) : kd;
+  }
+};
+
+}  // namespace mjray

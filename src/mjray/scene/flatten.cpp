@@ -41,7 +41,7 @@ class Flattener {
       emit_mesh(*node.mesh, world_from_node, material);
       return;
     }
-    world_.shapes.push_back({node.shape, world_from_node * node.node_from_object, material});
+    world_.shapes.push_back({node.shape, world_from_node * node.node_from_object, material, node.node_from_object});
   }
 
   void emit_mesh(const ObjMesh& mesh, const Transform& world_from_object, uint32_t material) {

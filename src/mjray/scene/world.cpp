@@ -90,10 +90,12 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
     n = unit_sphere_normal(p);
     si.uv = unit_sphere_uv(p);
   } else {
+    const CubeFace face = unit_cube_face(p);
+    p[face.axis] = face.side > 0 ? 1.f : 0.f;  // onto the face, so that textures see its plane exactly
     n = unit_cube_normal(p);
     si.uv = unit_cube_uv(p);
   }
-  si.object_point = p;
+  si.object_point = s.node_from_object(p);
   si.point = s.world_from_object(p);
   si.geometric_normal = normalize(s.world_from_object(n));
   si.shading_normal = si.geometric_normal;

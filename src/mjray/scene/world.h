@@ -38,6 +38,9 @@ struct WorldShape {
   NodeShape kind;
   Transform world_from_object;
   uint32_t material = 0;
+  /// Places the unit primitive in its node's frame (nh_sphere/nh_box placement; identity for
+  /// gr.sphere/gr.cube): solid textures are evaluated in that frame.
+  Transform node_from_object = {};
 };
 
 /// Everything the integrator needs to shade a hit, computed once for the closest hit.
@@ -46,7 +49,10 @@ struct SurfaceInteraction {
   Normal3 geometric_normal;  ///< unit, world space, as the surface is oriented (not flipped)
   Normal3 shading_normal;    ///< unit, world space, on the same side as geometric_normal
   Point2 uv;
-  Point3 object_point;       ///< the hit in the primitive's object frame
+  /// The hit in the frame the primitive's geometry is written in, where solid textures are
+  /// evaluated: the unit shape's frame for gr.sphere/gr.cube, the node's frame for
+  /// nh_sphere/nh_box (whose centre and corner are given there) and meshes.
+  Point3 object_point;
   uint32_t material = 0;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <string>
@@ -129,50 +130,59 @@ std::vector<Ray> axis_rays(const World& world, int count, uint32_t seed) {
 // through an edge they share, or coplanar faces) the watertight test's rounding decides,
 // and its outcome depends on the order of the tests: either primitive is accepted when the
 // two t agree to a few ulps and the BVH's hit is exactly what its primitive reports.
-void expect_agrees(const World& world, const Bvh& bvh, const std::vector<Ray>& rays, const std::string& what) {
+void expect_agrees(const World& world, std::initializer_list<const Bvh*> bvhs, const std::vector<Ray>& rays,
+                   const std::string& what) {
   const BruteForce oracle(world);
   int mismatches = 0;
   for (size_t i = 0; i < rays.size() && mismatches < 5; ++i) {
     const Ray& ray = rays[i];
     const auto expected = oracle.intersect(ray, kInfinity);
-    const auto actual = bvh.intersect(ray, kInfinity);
-    const std::string where = what + " ray " + std::to_string(i);
-    if (expected.has_value() != actual.has_value()) {
-      ADD_FAILURE() << where << ": oracle " << (expected ? "hits" : "misses") << ", bvh "
-                    << (actual ? "hits" : "misses");
-      ++mismatches;
-      continue;
+    const float cut = expected ? expected->t * 0.5f : 1.f;
+    const bool expected_cut = oracle.occluded(ray, cut);
+    for (const Bvh* bvh : bvhs) {
+      const auto actual = bvh->intersect(ray, kInfinity);
+      const std::string where = what + (bvh->uses_avx() ? " (avx)" : " (baseline)") + " ray " + std::to_string(i);
+      if (expected.has_value() != actual.has_value()) {
+        ADD_FAILURE() << where << ": oracle " << (expected ? "hits" : "misses") << ", bvh "
+                      << (actual ? "hits" : "misses");
+        ++mismatches;
+        continue;
+      }
+      EXPECT_EQ(bvh->occluded(ray, kInfinity), actual.has_value()) << where;
+      EXPECT_EQ(bvh->occluded(ray, cut), expected_cut) << where;
+      EXPECT_EQ(bvh->occluded(ray, cut), bvh->intersect(ray, cut).has_value()) << where;
+      if (!expected) continue;
+      EXPECT_NEAR(actual->t, expected->t, 1e-4f * expected->t) << where;
+      if (expected->prim == actual->prim) {
+        EXPECT_EQ(actual->u, expected->u) << where;
+        EXPECT_EQ(actual->v, expected->v) << where;
+      } else if (std::abs(actual->t - expected->t) > 1e-6f * expected->t) {
+        ADD_FAILURE() << where << ": prim " << actual->prim << " at t " << actual->t << ", oracle prim "
+                      << expected->prim << " at t " << expected->t;
+        ++mismatches;
+      } else {
+        const auto own = world.intersect_primitive(actual->prim, ray, kInfinity);
+        ASSERT_TRUE(own.has_value()) << where;
+        EXPECT_EQ(own->t, actual->t) << where;
+        EXPECT_EQ(own->u, actual->u) << where;
+        EXPECT_EQ(own->v, actual->v) << where;
+      }
     }
-    EXPECT_EQ(bvh.occluded(ray, kInfinity), actual.has_value()) << where;
-    if (!expected) continue;
-    EXPECT_NEAR(actual->t, expected->t, 1e-4f * expected->t) << where;
-    if (expected->prim == actual->prim) {
-      EXPECT_EQ(actual->u, expected->u) << where;
-      EXPECT_EQ(actual->v, expected->v) << where;
-    } else if (std::abs(actual->t - expected->t) > 1e-6f * expected->t) {
-      ADD_FAILURE() << where << ": prim " << actual->prim << " at t " << actual->t << ", oracle prim "
-                    << expected->prim << " at t " << expected->t;
-      ++mismatches;
-    } else {
-      const auto own = world.intersect_primitive(actual->prim, ray, kInfinity);
-      ASSERT_TRUE(own.has_value()) << where;
-      EXPECT_EQ(own->t, actual->t) << where;
-      EXPECT_EQ(own->u, actual->u) << where;
-      EXPECT_EQ(own->v, actual->v) << where;
-    }
-    const float cut = expected->t * 0.5f;
-    EXPECT_EQ(bvh.occluded(ray, cut), bvh.intersect(ray, cut).has_value()) << where;
-    EXPECT_EQ(bvh.occluded(ray, cut), oracle.occluded(ray, cut)) << where;
   }
   EXPECT_EQ(mismatches, 0) << what;
 }
 
+void expect_agrees(const World& world, const Bvh& bvh, const std::vector<Ray>& rays, const std::string& what) {
+  expect_agrees(world, {&bvh}, rays, what);
+}
+
 void expect_agrees_all_kinds(const World& world, int random_count, int camera_side, const std::string& what) {
-  const Bvh bvh(world, 0);
+  // Both traversal variants where the CPU has AVX; the baseline twice otherwise.
+  const Bvh best(world, 0), baseline(world, 0, BvhSimd::kBaseline);
   const Bounds3 b = world.bounds();
-  expect_agrees(world, bvh, random_rays(b, random_count, 7), what + " random");
-  expect_agrees(world, bvh, camera_rays(b, camera_side, camera_side), what + " camera");
-  expect_agrees(world, bvh, axis_rays(world, random_count / 4, 11), what + " axis-parallel");
+  expect_agrees(world, {&best, &baseline}, random_rays(b, random_count, 7), what + " random");
+  expect_agrees(world, {&best, &baseline}, camera_rays(b, camera_side, camera_side), what + " camera");
+  expect_agrees(world, {&best, &baseline}, axis_rays(world, random_count / 4, 11), what + " axis-parallel");
 }
 
 TEST(BvhOracle, AgreesWithBruteForceOnRealMeshes) {
@@ -331,7 +341,7 @@ TEST(BvhEdgeCases, NanAndInfiniteRaysMissWithoutCrashing) {
   MJRAY_REQUIRE_SHARED(shared);
   World world = obj_world(shared / "models/small/teapot_low_npm.obj");
   add_shapes(world, 10, 41);
-  const Bvh bvh(world, 0);
+  const Bvh best(world, 0), baseline(world, 0, BvhSimd::kBaseline);
   const Point3 c = world.bounds().centre();
   const std::vector<Ray> rays = {
       {{kNaN, 0, 0}, {0, 0, 1}},          {{c.x, c.y, c.z}, {kNaN, 0, 1}},
@@ -339,17 +349,20 @@ TEST(BvhEdgeCases, NanAndInfiniteRaysMissWithoutCrashing) {
       {{c.x, c.y, c.z}, {kInfinity, 1, 0}}, {{c.x, c.y, c.z}, {-kInfinity, kInfinity, kInfinity}},
       {{c.x, c.y, c.z}, {0, 0, 0}},
   };
-  for (const Ray& ray : rays) {
-    EXPECT_FALSE(bvh.intersect(ray, kInfinity).has_value());
-    EXPECT_FALSE(bvh.occluded(ray, kInfinity));
-  }
-  // A tiny but finite direction is a valid ray: t scales up, the answer must not change.
-  const Ray tiny{{c.x, c.y, c.z + 100}, {0, 1e-32f, -1e-30f}};
-  expect_agrees(world, bvh, {tiny, {tiny.origin, {0, 0, -1e-30f}}}, "tiny direction");
   const Ray good{{c.x, c.y, c.z + 100}, {0, 0, -1}};
-  EXPECT_FALSE(bvh.intersect(good, kNaN).has_value());
-  EXPECT_FALSE(bvh.intersect(good, 0).has_value());
-  EXPECT_FALSE(bvh.intersect(good, -1).has_value());
+  // A tiny but finite direction is a valid ray: t scales up, the hit stays.
+  const Ray tiny{good.origin, {0, 1e-32f, -1e-30f}};
+  for (const Bvh* bvh : {&best, &baseline}) {
+    for (const Ray& ray : rays) {
+      EXPECT_FALSE(bvh->intersect(ray, kInfinity).has_value());
+      EXPECT_FALSE(bvh->occluded(ray, kInfinity));
+    }
+    EXPECT_TRUE(bvh->intersect(tiny, kInfinity).has_value());
+    EXPECT_FALSE(bvh->intersect(good, kNaN).has_value());
+    EXPECT_FALSE(bvh->intersect(good, 0).has_value());
+    EXPECT_FALSE(bvh->intersect(good, -1).has_value());
+  }
+  expect_agrees(world, {&best, &baseline}, {tiny, {good.origin, {0, 0, -1e-30f}}, good}, "tiny direction");
 }
 
 TEST(BvhEdgeCases, RaysFromInsideAClosedMeshAlwaysHit) {

@@ -1,0 +1,97 @@
+#include "mjray/io/jpeg_reader.h"
+
+#include <csetjmp>
+#include <string>
+#include <vector>
+
+// jpeglib.h needs FILE and size_t declared first.
+#include <jpeglib.h>
+
+#include "mjray/core/error.h"
+
+namespace mjray {
+
+namespace {
+
+// libjpeg reports errors by longjmp, which skips C++ destructors: every function that calls
+// setjmp holds only plain C state, and buffers are owned by its caller (as for libpng).
+
+/// libjpeg's error manager extended with where to jump and what it said.
+struct JpegError {
+  jpeg_error_mgr manager;  // first, so that libjpeg's pointer to it is a pointer to this
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+void on_jpeg_error(j_common_ptr info) {
+  auto* error = reinterpret_cast<JpegError*>(info->err);
+  (*info->err->format_message)(info, error->message);
+  std::longjmp(error->jump, 1);
+}
+
+// Corrupt-data warnings still decode an image; keep them off the user's terminal.
+void on_jpeg_message(j_common_ptr) {}
+
+/// A libjpeg decompression session; destroyed by its owner, outside any setjmp frame.
+struct JpegReader {
+  jpeg_decompress_struct info{};
+  JpegError error{};
+  bool created = false;
+
+  ~JpegReader() {
+    if (created) jpeg_destroy_decompress(&info);
+  }
+};
+
+/// Creates the session and reads the header, asking for RGB output.
+bool read_jpeg_header(JpegReader& r, FILE* file) {
+  r.info.err = jpeg_std_error(&r.error.manager);
+  r.error.manager.error_exit = on_jpeg_error;
+  r.error.manager.output_message = on_jpeg_message;
+  if (setjmp(r.error.jump)) return false;
+  jpeg_create_decompress(&r.info);
+  r.created = true;
+  jpeg_stdio_src(&r.info, file);
+  jpeg_read_header(&r.info, TRUE);
+  r.info.out_color_space = JCS_RGB;
+  return true;
+}
+
+/// Decodes every scanline into `rgb`, which the caller sized from the header's dimensions.
+bool read_jpeg_rows(JpegReader& r, unsigned char* rgb, size_t width, size_t height) {
+  if (setjmp(r.error.jump)) return false;
+  jpeg_start_decompress(&r.info);
+  if (r.info.output_components != 3 || r.info.output_width != width || r.info.output_height != height) {
+    std::snprintf(r.error.message, sizeof r.error.message, "unsupported pixel layout");
+    return false;
+  }
+  while (r.info.output_scanline < r.info.output_height) {
+    JSAMPROW row = rgb + size_t(r.info.output_scanline) * width * 3;
+    jpeg_read_scanlines(&r.info, &row, 1);
+  }
+  jpeg_finish_decompress(&r.info);
+  return true;
+}
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& reason) {
+  throw OutputError("cannot read '" + path.string() + "': " + reason);
+}
+
+}  // namespace
+
+Image read_jpeg(const std::filesystem::path& path, FILE* file, size_t max_pixels) {
+  JpegReader r;
+  if (!read_jpeg_header(r, file)) fail(path, std::string("libjpeg: ") + r.error.message);
+  const size_t width = r.info.image_width, height = r.info.image_height;
+  if (width == 0 || height == 0 || width * height > max_pixels)
+    fail(path, "bad JPEG size " + std::to_string(width) + "x" + std::to_string(height));
+  std::vector<unsigned char> rgb(width * height * 3);
+  if (!read_jpeg_rows(r, rgb.data(), width, height)) fail(path, std::string("libjpeg: ") + r.error.message);
+  Image image{int(width), int(height)};
+  for (size_t i = 0; i < width * height; ++i)
+    image.at(int(i % width), int(i / width)) =
+        Color(float(rgb[3 * i]) / 255.0f, float(rgb[3 * i + 1]) / 255.0f, float(rgb[3 * i + 2]) / 255.0f);
+  return image;
+}
+
+}  // namespace mjray

@@ -1,0 +1,183 @@
+// Statistical checks of sampling: glossy cones (χ²), area-light penumbrae against the
+// analytic visible fraction, and adaptive anti-aliasing against a supersampled reference.
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "mjray/accel/brute_force.h"
+#include "mjray/core/rng.h"
+#include "mjray/integrator/sampling.h"
+#include "mjray/render/renderer.h"
+#include "mjray/scene/flatten.h"
+#include "support/scene_builder.h"
+
+namespace mjray {
+namespace {
+
+TEST(StatGlossy, ConeDirectionsStayInsideAndAreUniformOverSolidAngle) {
+  const Vector3 axis = normalize(Vector3(0.3f, -0.5f, 0.8f));
+  const float cos_max = std::cos(0.4f);
+  // A frame to measure φ in.
+  const Vector3 ref = normalize(cross(axis, Vector3(1, 0, 0)));
+  const Vector3 ref2 = cross(axis, ref);
+  constexpr int kThetaBins = 10, kPhiBins = 8, kSamples = 80000;
+  int counts[kThetaBins][kPhiBins] = {};
+  RandomStream random(42, 0, 0);
+  for (int i = 0; i < kSamples; ++i) {
+    const Vector3 d = sample_cone(axis, cos_max, random.uniform(), random.uniform());
+    const float c = dot(d, axis);
+    ASSERT_GE(c, cos_max - 1e-5f);
+    ASSERT_NEAR(length(d), 1, 1e-5f);
+    // Uniform over solid angle: cosθ is uniform on [cos_max, 1], φ uniform on [0, 2π).
+    const int tb = std::min(kThetaBins - 1, int((1 - c) / (1 - cos_max) * kThetaBins));
+    float phi = std::atan2(dot(d, ref2), dot(d, ref));
+    if (phi < 0) phi += 2 * std::numbers::pi_v<float>;
+    const int pb = std::min(kPhiBins - 1, int(phi / (2 * std::numbers::pi_v<float>) * kPhiBins));
+    ++counts[tb][pb];
+  }
+  double chi2 = 0;
+  const double expected = double(kSamples) / (kThetaBins * kPhiBins);
+  for (auto& row : counts)
+    for (int c : row) chi2 += (c - expected) * (c - expected) / expected;
+  // 79 degrees of freedom: P(χ² > 124) ≈ 0.001.
+  EXPECT_LT(chi2, 124) << "directions are not uniform over the cone";
+}
+
+TEST(StatGlossy, ConcentratedSamplesFailTheTest) {
+  // The same statistic on a deliberately wrong warp (cosθ uniform in θ instead) is rejected,
+  // so the test above can fail.
+  const float cos_max = std::cos(0.4f);
+  constexpr int kBins = 10, kSamples = 80000;
+  int counts[kBins] = {};
+  RandomStream random(1, 0, 0);
+  for (int i = 0; i < kSamples; ++i) {
+    const float c = std::cos(random.uniform() * 0.4f);
+    ++counts[std::min(kBins - 1, int((1 - c) / (1 - cos_max) * kBins))];
+  }
+  double chi2 = 0;
+  for (int c : counts) chi2 += (c - kSamples / kBins) * (c - kSamples / kBins) / double(kSamples / kBins);
+  EXPECT_GT(chi2, 124);
+}
+
+/// The floor at P = (px, 0, 0) under a square light of half-size a at height H, half of it
+/// hidden by an opaque plane x ≤ 0 at height h.
+struct Penumbra {
+  static constexpr float kH = 100, kA = 10, kBlocker = 50;
+
+  static World world(bool blocked) {
+    RenderJob job;
+    std::vector<std::shared_ptr<const SceneNode>> nodes = {
+        test::mesh(test::floor_quad(1000), PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1})};
+    if (blocked) nodes.push_back(test::box({-500, kBlocker, -500}, {0, kBlocker + 1, 500}));
+    job.root = test::group(nodes);
+    job.lights = {AreaLight{{-kA, kH, -kA}, {2 * kA, 0, 0}, {0, 0, 2 * kA}, {1, 1, 1}, {1, 0, 0}}};
+    return flatten(job);
+  }
+
+  /// The unoccluded fraction of the light seen from (px, 0, 0): the blocker's edge projects to
+  /// x = px·(1 − H/h) on the light.
+  static float visible_fraction(float px) {
+    const float edge = px * (1 - kH / kBlocker);
+    return std::clamp((kA - edge) / (2 * kA), 0.f, 1.f);
+  }
+};
+
+Color shade_floor(const World& world, float px, int samples) {
+  const BruteForce accel(world);
+  const WhittedIntegrator integrator(world, accel, {8, 8, samples});
+  RandomStream random(7, uint64_t(px * 1000 + 5000), 0);
+  RayCounters counters;
+  return integrator.radiance({{px, 1, -30}, normalize(Vector3(0, -1, 30))}, random, counters);
+}
+
+TEST(StatAreaLight, PenumbraMatchesTheAnalyticVisibleFraction) {
+  const World open = Penumbra::world(false), blocked = Penumbra::world(true);
+  for (const float px : {-8.f, -5.f, -2.f, 0.f, 3.f, 6.5f}) {
+    const float ratio = shade_floor(blocked, px, 16).r / shade_floor(open, px, 16).r;
+    // 16×16 stratified samples: the error is well below 1/16 per axis.
+    EXPECT_NEAR(ratio, Penumbra::visible_fraction(px), 0.02f) << "at x = " << px;
+  }
+}
+
+TEST(StatAreaLight, OneSampleGivesAHardShadow) {
+  const World open = Penumbra::world(false), blocked = Penumbra::world(true);
+  // With -s 1 the light acts as a point at its centre, visible from x > 0 only.
+  EXPECT_EQ(shade_floor(blocked, -3, 1).r, 0);
+  EXPECT_EQ(shade_floor(blocked, -0.5f, 1).r, 0);
+  EXPECT_EQ(shade_floor(blocked, 3, 1).r, shade_floor(open, 3, 1).r);
+  EXPECT_GT(shade_floor(open, 3, 1).r, 0);
+}
+
+/// An edge-heavy scene: a grid of small spheres and thin boxes over a floor.
+RenderJob edge_scene() {
+  RenderJob job;
+  std::vector<std::shared_ptr<const SceneNode>> nodes = {
+      test::mesh(test::floor_quad(100), PhongMaterial{{0.7f, 0.7f, 0.7f}, {0, 0, 0}, 1})};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 2; ++j) {
+      nodes.push_back(test::sphere({float(i) * 1.2f - 2.4f, 0.4f, float(j) * 1.5f - 1.5f}, 0.4f,
+                                   PhongMaterial{{0.9f, 0.2f, 0.1f}, {0.5f, 0.5f, 0.5f}, 30}));
+      nodes.push_back(test::box({float(i) * 1.2f - 2.9f, 0, float(j) * 1.5f - 0.9f},
+                                {float(i) * 1.2f - 2.8f, 1.5f, float(j) * 1.5f - 0.8f}));
+    }
+  job.root = test::group(nodes);
+  job.width = 160;
+  job.height = 100;
+  job.camera = {{0, 4, 6}, {0, -0.6f, -1}, {0, 1, 0}, 50};
+  job.ambient = {0.2f, 0.2f, 0.2f};
+  job.lights = {PointLight{{4, 8, 4}, {0.8f, 0.8f, 0.8f}, {1, 0, 0}}};
+  return job;
+}
+
+double mean_error(const Image& a, const Image& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.pixels().size(); ++i) {
+    const Color d = a.pixels()[i] - b.pixels()[i];
+    sum += std::abs(d.r) + std::abs(d.g) + std::abs(d.b);
+  }
+  return sum / double(a.pixels().size());
+}
+
+TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
+  const RenderJob job = edge_scene();
+  const World world = flatten(job);
+  const BruteForce accel(world);
+  const WhittedIntegrator integrator(world, accel, {});
+  const PinholeCamera camera(job.camera, job.width, job.height);
+  RenderSettings reference_settings;
+  reference_settings.antialias_samples = 16;
+  reference_settings.antialias_threshold = 1e-6f;  // every pixel that varies at all
+  reference_settings.antialias_max_passes = 100;
+  const Image reference = render_image(camera, job.width, job.height, integrator, reference_settings);
+
+  const Image plain = render_image(camera, job.width, job.height, integrator, {});
+  RenderSettings adaptive;
+  adaptive.antialias_samples = 4;
+  RenderStats stats;
+  const Image smoothed = render_image(camera, job.width, job.height, integrator, adaptive, &stats);
+
+  EXPECT_LT(mean_error(smoothed, reference), 0.6 * mean_error(plain, reference));
+  EXPECT_GT(stats.pixels_supersampled, 0u);
+  EXPECT_LT(stats.pixels_supersampled, uint64_t(job.width * job.height) / 4);
+  EXPECT_EQ(stats.rays.primary, uint64_t(job.width * job.height) + stats.pixels_supersampled * 16);
+}
+
+TEST(StatAntialiasing, ImageIsIdenticalAcrossThreadCounts) {
+  const RenderJob job = edge_scene();
+  const World world = flatten(job);
+  const BruteForce accel(world);
+  const WhittedIntegrator integrator(world, accel, {});
+  const PinholeCamera camera(job.camera, job.width, job.height);
+  RenderSettings settings;
+  settings.antialias_samples = 3;
+  settings.threads = 1;
+  const Image one = render_image(camera, job.width, job.height, integrator, settings);
+  settings.threads = 3;
+  settings.tile_size = 7;
+  EXPECT_EQ(render_image(camera, job.width, job.height, integrator, settings).pixels(), one.pixels());
+}
+
+}  // namespace
+}  // namespace mjray
