@@ -4,15 +4,19 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "cli.h"
+#include "job_statistics.h"
+#include "render_watcher.h"
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/camera/pinhole_camera.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/io/image_writer.h"
 #include "mjray/lua/scene_loader.h"
+#include "mjray/render/render_checkpoint.h"
 #include "mjray/render/renderer.h"
 #include "mjray/scene/flatten.h"
 
@@ -48,16 +52,43 @@ AcceleratorOptions accelerator_options(const CommandLine& cl) {
   return options;
 }
 
-void render_job(const CommandLine& cl, const RenderJob& job, double parse_seconds) {
+/// Thrown when the user interrupted a render; main exits 130.
+struct Interrupted {};
+
+/// A hash of everything that decides a job's pixels: the script's text, which job, and the
+/// options that change the image, so --resume refuses a state saved by something else.
+uint64_t render_fingerprint(const CommandLine& cl, size_t job_index, const RenderSettings& settings) {
+  std::ifstream script(cl.scene, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(script)), {});
+  char options[256];
+  std::snprintf(options, sizeof options, "|job=%zu r=%d f=%d s=%d a=%d t=%.9g seed=%llu order=%d tile=%d", job_index,
+                cl.max_reflection_depth, cl.max_refraction_depth, cl.area_light_samples, cl.antialias_samples,
+                double(cl.antialias_threshold), (unsigned long long)cl.seed, int(cl.load.transform_order),
+                settings.tile_size);
+  text += options;
+  uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
+  for (const unsigned char c : text) hash = (hash ^ c) * 0x100000001b3ULL;
+  return hash;
+}
+
+JobStatistics render_job(const CommandLine& cl, const RenderJob& job, size_t job_index, double parse_seconds) {
+  JobStatistics stats;
+  stats.seconds_parse = parse_seconds;
+  const auto path = output_path(cl, job);
+  stats.image = path.string();
+  const auto state_path = checkpoint_path(path);
+
   // Compute the flat world and its accelerator.
   auto start = Clock::now();
   std::vector<std::string> warnings;
   const World world = flatten(job, &warnings);
   for (const auto& w : warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
   const auto accel = make_accelerator(world, accelerator_options(cl));
-  const double build_seconds = seconds_since(start);
+  stats.seconds_build = seconds_since(start);
+  stats.primitives = world.primitive_count();
+  stats.accel = std::string(accel->name());
 
-  // Compute the image.
+  // Compute the image, resuming from a saved state when asked.
   const PinholeCamera camera(job.camera, job.width, job.height);
   const WhittedIntegrator integrator(world, *accel, {cl.max_reflection_depth, cl.max_refraction_depth, cl.area_light_samples});
   RenderSettings settings;
@@ -65,24 +96,41 @@ void render_job(const CommandLine& cl, const RenderJob& job, double parse_second
   settings.seed = cl.seed;
   settings.antialias_samples = cl.antialias_samples;
   settings.antialias_threshold = cl.antialias_threshold;
-  RenderStats stats;
-  const Image image = render_image(camera, job.width, job.height, integrator, settings, &stats);
-
-  const auto path = output_path(cl, job);
-  write_image(image, path, cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear);
-
-  if (!cl.quiet || cl.print_stats) {
-    const double rays_per_second = stats.seconds > 0 ? double(stats.rays.total()) / stats.seconds : 0;
-    std::fprintf(stderr,
-                 "mjray: wrote %s (%dx%d) | parse %.3fs, build %.3fs (%s), render %.3fs on %d threads | "
-                 "%u primitives | rays: %llu primary, %llu secondary, %llu shadow (%.2f M/s) | "
-                 "%llu pixels supersampled\n",
-                 path.string().c_str(), job.width, job.height, parse_seconds, build_seconds,
-                 std::string(accel->name()).c_str(), stats.seconds, stats.threads, world.primitive_count(),
-                 (unsigned long long)stats.rays.primary, (unsigned long long)stats.rays.secondary,
-                 (unsigned long long)stats.rays.shadow, rays_per_second / 1e6,
-                 (unsigned long long)stats.pixels_supersampled);
+  TileRender render(camera, job.width, job.height, integrator, settings);
+  const uint64_t fingerprint = render_fingerprint(cl, job_index, settings);
+  if (cl.resume) {
+    RenderCheckpoint saved = read_checkpoint(state_path);
+    if (saved.fingerprint != fingerprint)
+      throw SceneError(state_path.string() + ": this resume state was saved by a different scene or different "
+                       "options; render without --resume to start again");
+    render.resume_from(saved);
   }
+  const OutputGamma gamma = cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear;
+  bool finished = false;
+  {
+    RenderWatcher watcher(render, path, {cl.quiet, 5.0, gamma});
+    finished = render.run();
+    if (finished) watcher.finish();
+  }
+  stats.render = render.stats();
+  stats.seconds_render = stats.render.seconds;
+
+  if (!finished) {
+    // Keep what is done: the partial image and the state to resume from.
+    write_image(render.snapshot(), path, gamma);
+    RenderCheckpoint checkpoint = render.checkpoint();
+    checkpoint.fingerprint = fingerprint;
+    write_checkpoint(checkpoint, state_path);
+    std::fprintf(stderr, "mjray: interrupted: wrote the partial image %s and its state; run again with --resume to finish\n",
+                 path.string().c_str());
+    throw Interrupted{};
+  }
+  write_image(render.image(), path, gamma);
+  std::error_code ignored;
+  std::filesystem::remove(state_path, ignored);
+  stats.peak_rss_bytes = peak_rss_bytes();
+  if (!cl.quiet || cl.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
+  return stats;
 }
 
 }  // namespace
@@ -118,7 +166,17 @@ int main(int argc, char** argv) {
       std::filesystem::create_directories(*cl.outdir, ec);
       if (ec) throw OutputError("cannot create the output folder '" + cl.outdir->string() + "': " + ec.message());
     }
-    for (const RenderJob& job : scene.jobs) render_job(cl, job, parse_seconds);
+    install_interrupt_handlers();
+    std::vector<JobStatistics> statistics;
+    for (size_t i = 0; i < scene.jobs.size(); ++i) {
+      // With --resume, jobs whose image is complete (no state file beside it) are done.
+      const auto path = output_path(cl, scene.jobs[i]);
+      if (cl.resume && !std::filesystem::exists(checkpoint_path(path)) && std::filesystem::exists(path)) continue;
+      statistics.push_back(render_job(cl, scene.jobs[i], i, parse_seconds));
+      if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
+    }
+  } catch (const Interrupted&) {
+    return 130;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mjray: error: %s\n", e.what());
     return 1;

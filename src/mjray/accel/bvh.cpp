@@ -3,7 +3,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <thread>
+#include <optional>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <future>
+#include <system_error>
 #include <thread>
 
 namespace mjray {
@@ -108,9 +109,16 @@ class Builder {
 
     // Build the children: the first right after this node, the second after the first's
     // subtree; large subtrees on two threads, spliced in afterwards.
+    std::vector<BvhNode> first, second;
+    std::future<void> task;  // declared after its outputs: its destructor waits for it
     if (threads > 1 && n >= kMinParallelSize) {
-      std::vector<BvhNode> first, second;
-      auto task = std::async(std::launch::async, [&] { build_node(begin, mid, depth + 1, threads / 2, first); });
+      try {
+        task = std::async(std::launch::async, [&] { build_node(begin, mid, depth + 1, threads / 2, first); });
+      } catch (const std::system_error&) {
+        threads = 1;  // no thread to be had: build this subtree serially
+      }
+    }
+    if (task.valid()) {
       build_node(mid, end, depth + 1, threads - threads / 2, second);
       task.get();
       append(out, first);
@@ -128,9 +136,11 @@ class Builder {
     return float(kBins) * (1 - 1e-6f) / (centroids.hi[axis] - centroids.lo[axis]);
   }
 
+  // The bin of a centroid; NaN (0·∞ when the extent is too small for a finite scale) and
+  // out-of-range values land in the end bins, the same way for binning and partitioning.
   static int bin_of(const BuildRef& r, int axis, float lo, float scale) {
-    const int b = int((r.centroid(axis) - lo) * scale);
-    return std::clamp(b, 0, kBins - 1);
+    const float f = (r.centroid(axis) - lo) * scale;
+    return f > 0 ? (f < float(kBins - 1) ? int(f) : kBins - 1) : 0;
   }
 
   // The cheapest SAH split over all axes, costs in units of node area (not divided by it,

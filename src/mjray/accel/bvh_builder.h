@@ -1,6 +1,6 @@
 #pragma once
-/// Binned-SAH construction of the binary BVH, kept apart from traversal so that either can
-/// change (e.g. a wider node layout) without touching the other.
+/// Construction of the BVH: a binary tree by binned SAH, then collapsed to wide nodes; kept
+/// apart from traversal so that either can change without touching the other.
 
 #include <array>
 #include <cstdint>
@@ -43,10 +43,6 @@ struct BvhBuildOptions {
 /// Builds over primitives 0..bounds.size()-1 with world-space `bounds[prim]`. Primitives with
 /// empty or non-finite bounds are left out.
 BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options);
-
-}  // namespace mjray
-
-namespace mjray {
 
 /// Collapses a binary hierarchy into kBvhWidth-wide nodes (root first) by repeatedly opening
 /// the inner child with the largest surface area; leaves keep their `order` ranges.

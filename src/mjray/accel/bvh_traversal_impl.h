@@ -1,8 +1,8 @@
 // BVH traversal for one instruction set. Included only by bvh.cpp, once per instruction set
 // inside its own namespace (hence no include guard): with MJRAY_BVH_AVX 0 for the baseline
 // build (SSE2, or plain C++ elsewhere), and with MJRAY_BVH_AVX 1 under
-// `#pragma GCC target("avx")`, chosen at run time. AVX has no fused multiply-add, so the
-// inlined watertight test computes bit for bit what World::intersect_primitive computes.
+// `#pragma GCC target("avx")`, chosen at run time. The pragma adds no fused multiply-add,
+// so the inlined watertight test rounds exactly as World::intersect_primitive's does.
 // Expects from the including file: kFarScale, kStackSize, StackEntry, TraversalView.
 
 /// What the slab tests need of a ray, splatted across SIMD lanes once per ray.

@@ -19,6 +19,8 @@ class Image {
   Color& at(int x, int y) { return pixels_[size_t(y) * size_t(width_) + size_t(x)]; }
   const Color& at(int x, int y) const { return pixels_[size_t(y) * size_t(width_) + size_t(x)]; }
   const std::vector<Color>& pixels() const { return pixels_; }
+  /// Raw row-major storage, for bulk reads and writes.
+  Color* data() { return pixels_.data(); }
 
  private:
   int width_ = 0;

@@ -18,7 +18,7 @@ double PerlinTexture::weight(const Point3& p) const {
       t = 0.5 + 0.5 * perlin_fractal(x, y, z, kFractalOctaves);
       break;
     case PerlinPattern::kMarble:
-      t = 0.5 + 0.5 * std::sin(kTwoPi * (x + kMarbleTurbulence * perlin_turbulence(x, y, z, kTurbulenceOctaves)));
+      t = 1 - std::abs(std::sin(std::numbers::pi * (x + kMarbleTurbulence * perlin_turbulence(x, y, z, kTurbulenceOctaves))));
       break;
     case PerlinPattern::kWavy:
       t = 0.5 + 0.5 * std::sin(kTwoPi * (x + noise_multiplier * perlin_noise(x, y, z)));

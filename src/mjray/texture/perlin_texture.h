@@ -14,8 +14,9 @@ namespace mjray {
 /// blend weight t ∈ [0, 1] (colour1 at 0, colour2 at 1):
 /// - kLinear     t = clamp(½ + ½·f(q)), linear interpolation (Hugo Elias' octave sum)
 /// - kCosine     the same t, cosine interpolation
-/// - kMarble     t = ½ + ½·sin(2π·(q.x + kMarbleTurbulence·T(q))), cosine interpolation
-///               (Perlin's marble: stripes along x bent by turbulence)
+/// - kMarble     t = 1 − |sin(π·(q.x + kMarbleTurbulence·T(q)))|, cosine interpolation
+///               (Perlin's marble: veins of colour2, one per unit of q.x, bent by turbulence;
+///               the |sin| cusp keeps them narrow on a colour1 ground)
 /// - kWavy       t = ½ + ½·sin(2π·(q.x + noise_multiplier·n(q))), cosine interpolation
 ///               (smooth stripes; the multiplier is how many stripe periods the noise shifts)
 /// - kWoodGrain  t = 20·n(q) − ⌊20·n(q)⌋, cosine interpolation (the report's §5.7 rings)
@@ -27,7 +28,7 @@ enum class PerlinPattern { kLinear, kCosine, kMarble, kWavy, kWoodGrain };
 struct PerlinTexture {
   static constexpr int kFractalOctaves = 4;
   static constexpr int kTurbulenceOctaves = 6;
-  static constexpr double kMarbleTurbulence = 1.5;
+  static constexpr double kMarbleTurbulence = 1;
   static constexpr double kWoodRings = 20;
 
   PerlinPattern pattern = PerlinPattern::kCosine;

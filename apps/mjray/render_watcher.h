@@ -1,0 +1,49 @@
+#pragma once
+/// Watches a running render from a second thread: shows progress on stderr, rewrites the
+/// image with the finished tiles every few seconds, and turns SIGINT/SIGTERM into a stop.
+
+#include <atomic>
+#include <filesystem>
+#include <thread>
+
+#include "mjray/io/image_writer.h"
+#include "mjray/render/renderer.h"
+
+namespace mjray {
+
+/// Installs SIGINT and SIGTERM handlers that set the flag interrupted() reads.
+void install_interrupt_handlers();
+/// Whether the user asked to stop (Ctrl-C or SIGTERM).
+bool interrupted();
+
+/// How the watcher reports.
+struct WatchOptions {
+  bool quiet = false;                   ///< no progress output
+  double snapshot_interval_seconds = 5; ///< incremental image rewrites; 0 = never
+  OutputGamma gamma = OutputGamma::kLinear;
+};
+
+/// Runs while it lives; the destructor stops the thread and prints the final 100% line.
+class RenderWatcher {
+ public:
+  RenderWatcher(TileRender& render, std::filesystem::path image_path, WatchOptions options);
+  ~RenderWatcher();
+  /// Marks the render finished so the last progress line says 100%.
+  void finish() { finished_ = true; }
+
+ private:
+  void loop();
+  void report(double elapsed, bool final);
+
+  TileRender& render_;
+  std::filesystem::path image_path_;
+  WatchOptions options_;
+  bool terminal_;
+  std::atomic<bool> done_{false};
+  std::atomic<bool> finished_{false};
+  int last_decile_ = -1;
+  double shown_fraction_ = 0;  // never goes backwards
+  std::thread thread_;
+};
+
+}  // namespace mjray
