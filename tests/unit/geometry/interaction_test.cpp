@@ -1,0 +1,91 @@
+// Shading data at hits: interpolated normals and UVs on triangles, UVs on spheres and cubes.
+
+#include <gtest/gtest.h>
+
+#include "mjray/geometry/box.h"
+#include "mjray/scene/flatten.h"
+#include "support/scene_builder.h"
+
+namespace mjray {
+namespace {
+
+/// One triangle with distinct vertex normals and UVs, placed by a transform.
+World triangle_world(const Transform& placement) {
+  ObjMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.normals = {normalize(Normal3(0, 0, 1)), normalize(Normal3(1, 0, 1)), normalize(Normal3(0, 1, 1))};
+  m.uvs = {{0.1f, 0.2f}, {0.9f, 0.3f}, {0.4f, 0.8f}};
+  m.triangles = {{ObjCorner{0, 0, 0}, ObjCorner{1, 1, 1}, ObjCorner{2, 2, 2}}};
+  RenderJob job;
+  job.root = test::mesh(m, default_material(), placement);
+  return flatten(job);
+}
+
+TEST(Interaction, InterpolatedNormalEqualsTheVertexNormalAtAVertex) {
+  const World world = triangle_world({});
+  // Barycentrics (b1, b2) = (1, 0) is vertex 1, (0, 1) vertex 2, (0, 0) vertex 0.
+  const Ray ray{{0, 0, 5}, {0, 0, -1}};
+  const Normal3 expected[] = {normalize(Normal3(0, 0, 1)), normalize(Normal3(1, 0, 1)), normalize(Normal3(0, 1, 1))};
+  const float b[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  for (int v = 0; v < 3; ++v) {
+    const SurfaceInteraction si = world.interaction(ray, Hit{5, 0, b[v][0], b[v][1]});
+    EXPECT_NEAR(si.shading_normal.x, expected[v].x, 1e-6f) << v;
+    EXPECT_NEAR(si.shading_normal.y, expected[v].y, 1e-6f) << v;
+    EXPECT_NEAR(si.shading_normal.z, expected[v].z, 1e-6f) << v;
+    EXPECT_NEAR(si.geometric_normal.z, 1, 1e-6f);
+  }
+}
+
+TEST(Interaction, InterpolatedUvsAtVerticesAndCentroid) {
+  const World world = triangle_world({});
+  const Ray ray{{0, 0, 5}, {0, 0, -1}};
+  const SurfaceInteraction at1 = world.interaction(ray, Hit{5, 0, 1, 0});
+  EXPECT_FLOAT_EQ(at1.uv.u, 0.9f);
+  EXPECT_FLOAT_EQ(at1.uv.v, 0.3f);
+  const SurfaceInteraction centroid = world.interaction(ray, Hit{5, 0, 1.f / 3, 1.f / 3});
+  EXPECT_NEAR(centroid.uv.u, (0.1f + 0.9f + 0.4f) / 3, 1e-6f);
+  EXPECT_NEAR(centroid.uv.v, (0.2f + 0.3f + 0.8f) / 3, 1e-6f);
+  EXPECT_NEAR(centroid.point.x, 1.f / 3, 1e-6f);
+  EXPECT_NEAR(centroid.point.y, 1.f / 3, 1e-6f);
+}
+
+TEST(Interaction, NormalsFollowNonUniformScaleAndMirroring) {
+  // Scaling x by −2 mirrors the triangle: the geometric normal must still be the transformed
+  // +z, and vertex normals transform by the inverse transpose.
+  const World world = triangle_world(Transform::scale(-2, 1, 1));
+  // Mirroring swaps two corners to keep the winding; find the vertex that was (1, 0, 0).
+  SurfaceInteraction si = world.interaction({{0, 0, 5}, {0, 0, -1}}, Hit{5, 0, 1, 0});
+  if (si.point.x > -1) si = world.interaction({{0, 0, 5}, {0, 0, -1}}, Hit{5, 0, 0, 1});
+  EXPECT_NEAR(si.point.x, -2, 1e-6f);
+  EXPECT_NEAR(si.geometric_normal.z, 1, 1e-6f);
+  const Normal3 n1 = normalize(Normal3(-0.5f, 0, 1));  // (1,0,1) under diag(−2,1,1)^−T
+  EXPECT_NEAR(si.shading_normal.x, n1.x, 1e-6f);
+  EXPECT_NEAR(si.shading_normal.z, n1.z, 1e-6f);
+}
+
+TEST(Interaction, CubeFacesMapTheirTwoOtherCoordinatesToUv) {
+  EXPECT_EQ(unit_cube_uv({1, 0.25f, 0.75f}), (Point2{0.25f, 0.75f}));   // +x face: (y, z)
+  EXPECT_EQ(unit_cube_uv({0.5f, 0, 0.125f}), (Point2{0.125f, 0.5f}));  // −y face: (z, x)
+  EXPECT_EQ(unit_cube_uv({0.3f, 0.6f, 1}), (Point2{0.3f, 0.6f}));      // +z face: (x, y)
+  EXPECT_EQ(unit_cube_normal({0.3f, 0.6f, 1}), Normal3(0, 0, 1));
+  EXPECT_EQ(unit_cube_normal({0, 0.6f, 0.2f}), Normal3(-1, 0, 0));
+}
+
+TEST(Interaction, SphereHitGivesSphericalUvAndOutwardNormal) {
+  RenderJob job;
+  job.root = test::sphere({2, 0, 0}, 3);
+  const World world = flatten(job);
+  // Hit the top of the sphere from above: θ = 0 → v = 0; the normal points up.
+  const Ray ray{{2, 10, 0}, {0, -1, 0}};
+  const SurfaceInteraction si = world.interaction(ray, Hit{7, world.primitive_count() - 1});
+  EXPECT_NEAR(si.point.y, 3, 1e-5f);
+  EXPECT_NEAR(si.geometric_normal.y, 1, 1e-6f);
+  EXPECT_NEAR(si.uv.v, 0, 1e-4f);
+  // A hit on the +z side, at the equator: φ = 90° → u = 0.25, v = 0.5.
+  const SurfaceInteraction side = world.interaction({{2, 0, 10}, {0, 0, -1}}, Hit{7, 0});
+  EXPECT_NEAR(side.uv.u, 0.25f, 1e-5f);
+  EXPECT_NEAR(side.uv.v, 0.5f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace mjray
