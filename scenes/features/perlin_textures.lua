@@ -17,7 +17,7 @@ local textures = {
   gr.perlinnoisecosineinterptexture({0.2, 0.6, 0.9}, {0.05, 0.1, 0.35}, 3),
   gr.perlinnoisemarbletexture({0.92, 0.92, 0.9}, {0.15, 0.15, 0.2}, 1.2),
   gr.perlinnoisewavytexture({0.9, 0.9, 0.95}, {0.2, 0.45, 0.25}, 2, 0.6),
-  gr.perlinnoisewoodgraintexture({0.55, 0.32, 0.14}, {0.40, 0.22, 0.09}, 0.8),
+  gr.perlinnoisewoodgraintexture({0.55, 0.32, 0.14}, {0.40, 0.22, 0.09}, 0.4),
 }
 
 for i, texture in ipairs(textures) do

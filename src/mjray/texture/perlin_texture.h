@@ -26,10 +26,10 @@ enum class PerlinPattern { kLinear, kCosine, kMarble, kWavy, kWoodGrain };
 /// A noise texture. `scale` is a frequency: noise lattice cells per object unit, so a
 /// smaller scale makes the pattern larger on the object ("scaled down in texture space").
 struct PerlinTexture {
-  static constexpr int kFractalOctaves = 4;
-  static constexpr int kTurbulenceOctaves = 6;
-  static constexpr double kMarbleTurbulence = 1;
-  static constexpr double kWoodRings = 20;
+  static constexpr int kFractalOctaves = 4;       ///< octaves of f (kLinear, kCosine)
+  static constexpr int kTurbulenceOctaves = 6;    ///< octaves of T (kMarble)
+  static constexpr double kMarbleTurbulence = 1;  ///< vein periods the turbulence may shift
+  static constexpr double kWoodRings = 20;        ///< rings per unit of noise (the report's 20)
 
   PerlinPattern pattern = PerlinPattern::kCosine;
   Color colour1;
