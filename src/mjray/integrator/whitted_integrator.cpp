@@ -80,6 +80,11 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Normal
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
                                          Depth depth, RandomStream& random,
                                          RayCounters& counters) const {
+  // Adaptive depth control: a ray whose colour would change the pixel by less than half an
+  // 8-bit step is not worth tracing. Without it, glass that both reflects and refracts at
+  // every hit grows a binary tree of 2^(r+f) rays.
+  constexpr float kMinWeight = 0.5f / 255;
+  if (depth.weight < kMinWeight) return {};
   ++counters.secondary;
   return trace(spawn_ray(si, direction), depth, random, counters);
 }
@@ -99,20 +104,19 @@ Color WhittedIntegrator::dielectric_light(const SurfaceInteraction& si, const No
   if (!transmitted) kr = 1;  // total internal reflection: the refracted share reflects
   Color result;
   if (kr > 0 && depth.reflection < settings_.max_reflection_depth)
-    result += kr * trace_secondary(si, reflect(wo, n), {depth.reflection + 1, depth.refraction}, random, counters);
+    result += kr * trace_secondary(si, reflect(wo, n), depth.reflected(kr), random, counters);
   if (kr < 1 && depth.refraction < settings_.max_refraction_depth)
-    result += (1 - kr) * trace_secondary(si, *transmitted, {depth.reflection, depth.refraction + 1}, random, counters);
+    result += (1 - kr) * trace_secondary(si, *transmitted, depth.refracted(1 - kr), random, counters);
   return result;
 }
 
 Color WhittedIntegrator::secondary_light(const SurfaceInteraction& si, const Normal3& n,
                                          const Vector3& wo, const Material& material, Depth depth,
                                          RandomStream& random, RayCounters& counters) const {
-  const Depth reflected{depth.reflection + 1, depth.refraction};
   const bool may_reflect = depth.reflection < settings_.max_reflection_depth;
   if (const auto* m = std::get_if<ReflectiveMaterial>(&material)) {
     if (!may_reflect || m->reflectivity <= 0) return {};
-    return m->reflectivity * trace_secondary(si, reflect(wo, n), reflected, random, counters);
+    return m->reflectivity * trace_secondary(si, reflect(wo, n), depth.reflected(m->reflectivity), random, counters);
   }
   if (const auto* m = std::get_if<RefractiveMaterial>(&material)) {
     const float kr = m->reflectivity;
@@ -125,6 +129,7 @@ Color WhittedIntegrator::secondary_light(const SurfaceInteraction& si, const Nor
   if (const auto* m = std::get_if<GlossyMaterial>(&material)) {
     if (!may_reflect || m->reflectivity <= 0) return {};
     const Vector3 mirror = reflect(wo, n);
+    const Depth reflected = depth.reflected(m->reflectivity);
     // Blur only the first reflection (as the original): deeper ones are plain mirrors.
     if (depth.reflection > 0 || m->samples <= 1)
       return m->reflectivity * trace_secondary(si, mirror, reflected, random, counters);

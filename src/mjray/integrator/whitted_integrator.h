@@ -43,9 +43,15 @@ class WhittedIntegrator {
   Color radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const;
 
  private:
+  /// Where a ray is in the recursion: bounces of each kind so far, and the weight its
+  /// colour will have in the pixel (the product of the Kr/Kt factors along the way).
   struct Depth {
     int reflection = 0;
     int refraction = 0;
+    float weight = 1;
+
+    Depth reflected(float factor) const { return {reflection + 1, refraction, weight * factor}; }
+    Depth refracted(float factor) const { return {reflection, refraction + 1, weight * factor}; }
   };
 
   Color trace(const Ray& ray, Depth depth, RandomStream& random, RayCounters& counters) const;

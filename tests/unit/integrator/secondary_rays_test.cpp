@@ -110,5 +110,16 @@ TEST(SecondaryRays, TotalInternalReflectionSendsAllLightBack) {
   EXPECT_EQ(t.rays.secondary, 1u);
 }
 
+TEST(SecondaryRays, NegligibleBranchesArePrunedSoGlassStaysCheap) {
+  // Fresnel glass splits every ray in two; with -r 30 -f 30 the full tree would have 2^60
+  // leaves. Branches whose weight in the pixel falls below half an 8-bit step are not traced.
+  const Material glass = FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, 1.5f};
+  RenderJob job = scene(test::group({test::sphere({0, 0, 0}, 2, glass), test::sphere({0, 0, 0}, 1, glass),
+                                     test::box({-3, -3, -3}, {3, 3, 3}, glass)}));
+  const Traced t = trace(job, {{0.3f, 0.2f, 10}, {0, 0, -1}}, {30, 30});
+  EXPECT_GT(t.rays.secondary, 10u);
+  EXPECT_LT(t.rays.secondary, 2000u);
+}
+
 }  // namespace
 }  // namespace mjray
