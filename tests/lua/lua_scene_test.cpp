@@ -89,6 +89,22 @@ class LuaTest : public ::testing::Test {
 
 using LuaScene = LuaTest;
 
+TEST_F(LuaScene, SnapshotsFreezeMaterialsAsTheyWereAtEachRender) {
+  // An animation may retexture a material between frames; earlier frames keep what they had.
+  const SceneDescription d = load(
+      "root = gr.node('root')\n"
+      "m = gr.material({1,0,0}, {0,0,0}, 1)\n"
+      "a = gr.sphere('a'); a:set_material(m); root:add_child(a)\n"
+      "b = gr.sphere('b'); b:set_material(m); root:add_child(b)\n" +
+      render_call() + "m:set_material_texture(gr.checkerboardtexture({0,0,0}, {1,1,1}, 1))\n" + render_call());
+  ASSERT_EQ(d.jobs.size(), 2u);
+  const auto& first = d.jobs[0].root->children;
+  const auto& second = d.jobs[1].root->children;
+  EXPECT_EQ(phong_of(*first[0]->material).texture, nullptr);
+  EXPECT_NE(phong_of(*second[0]->material).texture, nullptr);
+  EXPECT_EQ(first[0]->material, first[1]->material);  // still one material within a frame
+}
+
 TEST_F(LuaScene, NodeIsAnEmptyGroupWithIdentityTransform) {
   const auto scene = load("root = gr.node('root')\n" + render_call());
   ASSERT_EQ(scene.jobs.size(), 1u);

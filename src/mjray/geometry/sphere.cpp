@@ -29,10 +29,12 @@ std::optional<float> intersect_unit_sphere(const Ray& r, float t_max) {
 }
 
 Point2 unit_sphere_uv(const Point3& p) {
-  double phi = std::atan2(double(p.z), double(p.x));
+  // φ grows eastward as seen from outside (from +x toward −z), θ from the north pole, so an
+  // image wraps upright and unmirrored: v = 1 at the top (images have v = 0 at the bottom).
+  double phi = std::atan2(-double(p.z), double(p.x));
   if (phi < 0) phi += 2 * std::numbers::pi;
   const double theta = std::acos(std::clamp(double(p.y), -1.0, 1.0));
-  return {float(phi / (2 * std::numbers::pi)), float(theta / std::numbers::pi)};
+  return {float(phi / (2 * std::numbers::pi)), float(1 - theta / std::numbers::pi)};
 }
 
 }  // namespace mjray

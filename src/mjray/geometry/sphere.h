@@ -19,7 +19,8 @@ inline Bounds3 unit_sphere_bounds() { return {{-1, -1, -1}, {1, 1, 1}}; }
 /// Outward object-space normal at a point on the unit sphere.
 inline Normal3 unit_sphere_normal(const Point3& p) { return Normal3(p.x, p.y, p.z); }
 
-/// Spherical (u, v) in [0,1]²: u from the azimuth φ about y, v from the polar angle θ.
+/// Spherical (u, v) in [0,1]²: u from the azimuth φ about y (0 at +x, growing from +x toward
+/// −z), v = 1 − θ/π from the polar angle θ (v = 1 at the north pole, +y).
 Point2 unit_sphere_uv(const Point3& p);
 
 }  // namespace mjray

@@ -44,16 +44,24 @@ int gr_joint(lua_State* L) { return new_node(L, "gr.joint", NodeShape::kNone); }
 int gr_sphere(lua_State* L) { return new_node(L, "gr.sphere", NodeShape::kSphere); }
 int gr_cube(lua_State* L) { return new_node(L, "gr.cube", NodeShape::kCube); }
 
+/// A radius or edge length: zero (or a value that rounds to zero as a float) would make the
+/// shape's transform singular, and a negative one would turn it inside out.
+float arg_size(lua_State* L, int index, const char* fn, const char* what) {
+  const auto size = float(arg_number(L, index, fn, what));
+  if (!(size > 0)) bad_argument(L, fn, index, what, "a positive number");
+  return size;
+}
+
 int gr_nh_sphere(lua_State* L) {
   const Vector3 centre = arg_vector(L, 2, "gr.nh_sphere", "centre");
-  const auto radius = float(arg_number(L, 3, "gr.nh_sphere", "radius"));
+  const float radius = arg_size(L, 3, "gr.nh_sphere", "radius");
   return new_node(L, "gr.nh_sphere", NodeShape::kSphere,
                   Transform::translate(centre) * Transform::scale(radius, radius, radius));
 }
 
 int gr_nh_box(lua_State* L) {
   const Vector3 corner = arg_vector(L, 2, "gr.nh_box", "corner");
-  const auto size = float(arg_number(L, 3, "gr.nh_box", "size"));
+  const float size = arg_size(L, 3, "gr.nh_box", "size");
   return new_node(L, "gr.nh_box", NodeShape::kCube,
                   Transform::translate(corner) * Transform::scale(size, size, size));
 }
@@ -108,6 +116,7 @@ std::shared_ptr<const ObjMesh> file_mesh(lua_State* L, const std::string& name, 
   LoaderContext& ctx = context(L);
   const auto path = resolve_input(name, ctx.script_dir);
   if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
+  record_input(L, *path);
   const auto key = std::filesystem::weakly_canonical(*path);
   auto& cached = ctx.mesh_cache[key];
   try {
@@ -204,6 +213,9 @@ int gr_light(lua_State* L) {
 
 // --- gr.render: snapshot the graph ---------------------------------------------------------
 
+/// Largest image gr.render accepts: 2^27 pixels, about 5 GiB of render buffers.
+constexpr double kMaxRenderPixels = double(1 << 27);
+
 /// Copies the live graph into immutable nodes, composing each node's transform calls by the
 /// chosen rule and keeping shared children shared.
 class Snapshot {
@@ -227,7 +239,7 @@ class Snapshot {
     node->shape = live->shape;
     node->node_from_object = live->node_from_object;
     node->mesh = live->mesh;
-    node->material = live->material;
+    node->material = frozen_material(live->material);
     for (const Transform& call : live->transform_calls)
       node->parent_from_node = post_multiply_ ? node->parent_from_node * call : call * node->parent_from_node;
     for (const auto& child : live->children) node->children.push_back(copy(child, depth + 1));
@@ -238,7 +250,17 @@ class Snapshot {
 
  private:
   bool post_multiply_;
+  /// A copy of the material as it is now (a script may still change it, e.g. set a texture
+  /// for the next frame); shared materials stay shared within the snapshot.
+  std::shared_ptr<const Material> frozen_material(const std::shared_ptr<Material>& live) {
+    if (!live) return nullptr;
+    auto& copy = materials_[live.get()];
+    if (!copy) copy = std::make_shared<const Material>(*live);
+    return copy;
+  }
+
   std::map<const LuaNode*, std::shared_ptr<const SceneNode>> done_;
+  std::map<const Material*, std::shared_ptr<const Material>> materials_;
   std::set<const LuaNode*> in_progress_;
 };
 
@@ -246,12 +268,15 @@ class Snapshot {
 /// PinholeCamera's, which stays the final word.
 void check_camera(const RenderJob& job) {
   const CameraDescription& c = job.camera;
-  if (!(length(c.view) > 0)) throw ArgumentError("gr.render: the view direction is zero");
+  // Scaled to a largest component of 1 first, so that huge or tiny vectors square safely.
+  const Vector3 view = c.view / std::max(max_component(abs(c.view)), 1e-38f);
+  const Vector3 up = c.up / std::max(max_component(abs(c.up)), 1e-38f);
+  if (!(length(view) > 0)) throw ArgumentError("gr.render: the view direction is zero");
   if (!(c.fovy_degrees > 0 && c.fovy_degrees < 180))
     throw ArgumentError("gr.render: fovy must be between 0 and 180 degrees, got " + format_number(c.fovy_degrees));
-  const Vector3 forward = normalize(c.view);
-  const Vector3 up_ortho = c.up - forward * dot(c.up, forward);
-  if (!(length(up_ortho) > 1e-6f * length(c.up)))
+  const Vector3 forward = normalize(view);
+  const Vector3 up_ortho = up - forward * dot(up, forward);
+  if (!(length(up_ortho) > 1e-6f * length(up)))
     throw ArgumentError("gr.render: the up vector is parallel to the view direction");
   try {
     PinholeCamera(c, job.width, job.height);
@@ -273,6 +298,14 @@ int gr_render(lua_State* L) {
       width > 65536 || height > 65536)
     throw ArgumentError("gr.render: width and height must be whole numbers from 1 to 65536, got " +
                         format_number(width) + " x " + format_number(height));
+  // Compute whether the film fits: the renderer keeps about 40 bytes per pixel (colours, the
+  // anti-aliasing pass copy, the snapshot being written).
+  if (width * height > double(kMaxRenderPixels))
+    throw ArgumentError("gr.render: a " + format_number(width) + " x " + format_number(height) + " image (" +
+                        format_number(width * height / 1e6) + " million pixels) needs about " +
+                        format_number(std::ceil(width * height * 40 / double(1 << 30))) +
+                        " GiB of buffers; the limit is " + format_number(kMaxRenderPixels / 1e6) +
+                        " million pixels (e.g. 16384 x 8192)");
   job.width = int(width);
   job.height = int(height);
   job.camera.eye = arg_point(L, 5, fn, "eye");

@@ -142,10 +142,14 @@ TEST(Geometry, NanAndInfRaysReturnNoHit) {
 
 TEST(Geometry, SphereUvCoversTheUnitSquare) {
   const Point2 north = unit_sphere_uv({0, 1, 0}), south = unit_sphere_uv({0, -1, 0});
-  EXPECT_FLOAT_EQ(north.v, 0);
-  EXPECT_FLOAT_EQ(south.v, 1);
+  EXPECT_FLOAT_EQ(north.v, 1);
+  EXPECT_FLOAT_EQ(south.v, 0);
   EXPECT_NEAR(unit_sphere_uv({1, 0, 0}).u, 0, 1e-6f);
-  EXPECT_NEAR(unit_sphere_uv({0, 0, 1}).u, 0.25f, 1e-6f);
+  EXPECT_NEAR(unit_sphere_uv({0, 0, -1}).u, 0.25f, 1e-6f);
+  EXPECT_NEAR(unit_sphere_uv({0, 0, 1}).u, 0.75f, 1e-6f);
+  // Seen from +z, u grows to the right (toward +x) and v upward: images are not mirrored.
+  EXPECT_GT(unit_sphere_uv(Point3(0.1f, 0, 0.995f)).u, unit_sphere_uv(Point3(-0.1f, 0, 0.995f)).u);
+  EXPECT_GT(unit_sphere_uv(Point3(0, 0.1f, 0.995f)).v, unit_sphere_uv(Point3(0, -0.1f, 0.995f)).v);
   EXPECT_NEAR(unit_sphere_uv({-1, 0, 0}).v, 0.5f, 1e-6f);
 }
 

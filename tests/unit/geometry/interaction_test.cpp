@@ -75,15 +75,15 @@ TEST(Interaction, SphereHitGivesSphericalUvAndOutwardNormal) {
   RenderJob job;
   job.root = test::sphere({2, 0, 0}, 3);
   const World world = flatten(job);
-  // Hit the top of the sphere from above: θ = 0 → v = 0; the normal points up.
+  // Hit the top of the sphere from above: θ = 0 → v = 1; the normal points up.
   const Ray ray{{2, 10, 0}, {0, -1, 0}};
   const SurfaceInteraction si = world.interaction(ray, Hit{7, world.primitive_count() - 1});
   EXPECT_NEAR(si.point.y, 3, 1e-5f);
   EXPECT_NEAR(si.geometric_normal.y, 1, 1e-6f);
-  EXPECT_NEAR(si.uv.v, 0, 1e-4f);
-  // A hit on the +z side, at the equator: φ = 90° → u = 0.25, v = 0.5.
+  EXPECT_NEAR(si.uv.v, 1, 1e-4f);
+  // A hit on the +z side, at the equator: u = 0.75, v = 0.5.
   const SurfaceInteraction side = world.interaction({{2, 0, 10}, {0, 0, -1}}, Hit{7, 0});
-  EXPECT_NEAR(side.uv.u, 0.25f, 1e-5f);
+  EXPECT_NEAR(side.uv.u, 0.75f, 1e-5f);
   EXPECT_NEAR(side.uv.v, 0.5f, 1e-5f);
 }
 
