@@ -1,16 +1,22 @@
--- mjray showcase: what the renderer can do so far.
--- Spheres, boxes and an OBJ mesh (instanced three times through the node DAG), hierarchical
--- transforms, Phong materials, two lights with hard shadows and falloff, the sky gradient.
--- Render: ./render.sh            (writes out/showcase.png)
+-- mjray showcase: spheres, boxes and an OBJ mesh loaded once and placed three times through
+-- the node DAG; hierarchical transforms; Phong, mirror, Fresnel glass and glossy materials;
+-- checkerboard, marble and wood solid textures; a soft area light and a point light.
+-- Render: build/mjray -s 3 -a 3 scenes/showcase.lua     (./render.sh does this into out/)
 
 local root = gr.node('root')
 
 local ground_mat = gr.material({0.55, 0.52, 0.48}, {0.1, 0.1, 0.1}, 10)
+ground_mat:set_material_texture(gr.checkerboardtexture({0.62, 0.6, 0.56}, {0.38, 0.36, 0.34}, 1))
+local mirror = gr.reflectivematerial({0.03, 0.03, 0.03}, {0.8, 0.8, 0.8}, 200, 0.9)
+local glass = gr.fresneldiectricmaterial({0, 0, 0}, {0.8, 0.8, 0.8}, 400, 1.0, 1.5)
+local glossy = gr.glossyreflectivematerial({0.3, 0.05, 0.05}, {0.5, 0.5, 0.5}, 60, 0.9, 12)
+local marble = gr.material({0.9, 0.9, 0.88}, {0.5, 0.5, 0.5}, 80)
+marble:set_material_texture(gr.perlinnoisemarbletexture({0.92, 0.92, 0.9}, {0.2, 0.22, 0.3}, 2))
+local wood = gr.material({0.55, 0.32, 0.14}, {0.2, 0.2, 0.2}, 20)
+wood:set_material_texture(gr.perlinnoisewoodgraintexture({0.6, 0.36, 0.16}, {0.4, 0.22, 0.09}, 1.5))
 local red = gr.material({0.8, 0.15, 0.12}, {0.6, 0.6, 0.6}, 60)
-local blue = gr.material({0.15, 0.3, 0.8}, {0.7, 0.7, 0.7}, 120)
 local gold = gr.material({0.85, 0.65, 0.2}, {0.9, 0.8, 0.5}, 40)
 local jade = gr.material({0.2, 0.65, 0.45}, {0.4, 0.5, 0.45}, 25)
-local ivory = gr.material({0.9, 0.88, 0.8}, {0.3, 0.3, 0.3}, 15)
 
 -- the ground: a wide flat box whose top face is y = 0
 local ground = gr.nh_box('ground', {-50, -1, -50}, 100)
@@ -22,7 +28,7 @@ root:add_child(ground)
 for i = 0, 4 do
   local r = 0.25 + 0.12 * i
   local s = gr.nh_sphere('ball' .. i, {-3.2 + 1.25 * i + 0.1 * i * i, r, 2.2}, r)
-  s:set_material(i % 2 == 0 and red or blue)
+  s:set_material(({red, mirror, glass, marble, glossy})[i + 1])
   root:add_child(s)
 end
 
@@ -38,7 +44,7 @@ for i = 0, 5 do
   level:translate(0, 0.6 * i, 0)
   local c = gr.cube('block' .. i)
   c:translate(-0.5, 0, -0.5)
-  c:set_material(i % 2 == 0 and ivory or gold)
+  c:set_material(i % 2 == 0 and wood or gold)
   level:add_child(c)
   tower:add_child(level)
 end
@@ -60,9 +66,9 @@ for i, p in ipairs(placements) do
   root:add_child(holder)
 end
 
-local key = gr.light({-6, 9, 7}, {0.85, 0.8, 0.75}, {1, 0, 0})
+local key = gr.arealight({-6.5, 9, 6.5}, {0.85, 0.8, 0.75}, {1, 0, 0}, {-5.5, 9, 6.5}, {-6.5, 9, 7.5})
 local fill = gr.light({6, 4, 6}, {0.6, 0.65, 0.8}, {1, 0.02, 0.004})
 
 gr.render(root, 'showcase.png', 640, 360,
-          {0, 3.2, 8.5}, {0, -1.35, -4}, {0, 1, 0}, 45,
+          {0, 3.4, 9.5}, {0, -1.3, -4}, {0, 1, 0}, 45,
           {0.25, 0.25, 0.28}, {key, fill})
