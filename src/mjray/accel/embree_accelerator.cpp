@@ -187,8 +187,13 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, float t_max) con
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   if (rayhit.hit.geomID == kShapeGeometry)
     return Hit{rayhit.ray.tfar, uint32_t(world_.triangles.size()) + rayhit.hit.primID};
-  // Embree's (u, v) weight vertices 1 and 2, as mjray's (b1, b2) do.
-  return Hit{rayhit.ray.tfar, rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v};
+  // Recompute the hit with mjray's own watertight test, so that t, u and v (and with them
+  // the image) are bit for bit those of every other accelerator. Embree's (u, v) weight
+  // vertices 1 and 2 as mjray's (b1, b2) do; they are the fallback should the exact test
+  // miss a triangle Embree grazed.
+  const uint32_t prim = rayhit.hit.primID;
+  if (auto exact = world_.intersect_primitive(prim, ray, kInfinity)) return exact;
+  return Hit{rayhit.ray.tfar, prim, rayhit.hit.u, rayhit.hit.v};
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {

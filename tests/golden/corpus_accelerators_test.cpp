@@ -1,0 +1,67 @@
+// Every corpus scene gives the same image, bit for bit, through every accelerator: brute
+// force, the uniform grid at several sizes and its optimal size, the BVH and Embree.
+// Rendered in-process at a reduced size (same camera) to keep brute force affordable.
+
+#include <gtest/gtest.h>
+
+#include "mjray/accel/make_accelerator.h"
+#include "mjray/lua/scene_loader.h"
+#include "mjray/render/renderer.h"
+#include "mjray/scene/flatten.h"
+#include "support/test_paths.h"
+
+namespace mjray {
+namespace {
+
+const char* const kCorpusScenes[] = {
+    "hmhealey-cs488a4/data/hier.lua",           "hmhealey-cs488a4/data/instance.lua",
+    "hmhealey-cs488a4/data/macho-cows.lua",     "hmhealey-cs488a4/data/nonhier.lua",
+    "hmhealey-cs488a4/data/nonhier2.lua",       "hmhealey-cs488a4/data/sample.lua",
+    "hmhealey-cs488a4/data/simple-cows.lua",    "hmhealey-cs488a4/data/simple.lua",
+    "themarkrizkallah-cs488/A4/Assets/hier.lua", "themarkrizkallah-cs488/A4/Assets/instance.lua",
+    "themarkrizkallah-cs488/A4/Assets/macho-cows.lua", "themarkrizkallah-cs488/A4/Assets/mucho-macho-cows.lua",
+    "themarkrizkallah-cs488/A4/Assets/nonhier.lua", "themarkrizkallah-cs488/A4/Assets/nonhier2.lua",
+    "themarkrizkallah-cs488/A4/Assets/sample.lua", "themarkrizkallah-cs488/A4/Assets/simple-cows.lua",
+    "themarkrizkallah-cs488/A4/Assets/simple.lua",
+};
+
+std::vector<AcceleratorOptions> accelerators() {
+  std::vector<AcceleratorOptions> all = {{"grid", 1}, {"grid", 8}, {"grid", 37}, {"grid", 0}, {"bvh"}};
+  if (accelerator_names().find("embree") != std::string::npos) all.push_back({"embree"});
+  return all;
+}
+
+class CorpusAccelerators : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CorpusAccelerators, EveryAcceleratorGivesTheBruteForceImage) {
+  MJRAY_REQUIRE_SHARED(shared);
+  const SceneDescription scene = load_scene(shared / "corpus/cs488" / GetParam(), {});
+  for (RenderJob job : scene.jobs) {
+    // Keep the camera and aspect ratio; shrink the image.
+    const double shrink = 72.0 / std::max(job.width, job.height);
+    job.width = std::max(1, int(job.width * shrink));
+    job.height = std::max(1, int(job.height * shrink));
+    const World world = flatten(job);
+    const PinholeCamera camera(job.camera, job.width, job.height);
+    auto render_with = [&](const AcceleratorOptions& options) {
+      const auto accel = make_accelerator(world, options);
+      const WhittedIntegrator integrator(world, *accel, {});
+      return render_image(camera, job.width, job.height, integrator, {});
+    };
+    const Image reference = render_with({"none"});
+    for (const AcceleratorOptions& options : accelerators())
+      EXPECT_EQ(render_with(options).pixels(), reference.pixels())
+          << options.kind << " (grid size " << options.grid_size << ") differs from brute force";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusAccelerators, ::testing::ValuesIn(kCorpusScenes),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace mjray
