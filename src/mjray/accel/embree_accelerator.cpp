@@ -101,8 +101,8 @@ bool valid_query(const Ray& ray, float t_max) {
 
 }  // namespace
 
-EmbreeAccelerator::EmbreeAccelerator(const World& world, int threads)
-    : world_(world), bounds_(world.bounds()) {
+EmbreeAccelerator::EmbreeAccelerator(const World& world, int threads, bool exact_hits)
+    : world_(world), bounds_(world.bounds()), exact_hits_(exact_hits) {
   // Create the device, counting every byte it allocates.
   const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
   device_ = rtcNewDevice(config.c_str());
@@ -192,7 +192,8 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, float t_max) con
   // vertices 1 and 2 as mjray's (b1, b2) do; they are the fallback should the exact test
   // miss a triangle Embree grazed.
   const uint32_t prim = rayhit.hit.primID;
-  if (auto exact = world_.intersect_primitive(prim, ray, kInfinity)) return exact;
+  if (exact_hits_)
+    if (auto exact = world_.intersect_primitive(prim, ray, kInfinity)) return exact;
   return Hit{rayhit.ray.tfar, prim, rayhit.hit.u, rayhit.hit.v};
 }
 

@@ -20,7 +20,9 @@ class EmbreeAccelerator final : public Accelerator {
  public:
   /// Builds over `world` (which must outlive this); `threads` build threads, 0 = all cores.
   /// Throws SceneError when Embree cannot create a device or build the scene.
-  explicit EmbreeAccelerator(const World& world, int threads = 0);
+  /// With `exact_hits` (the default) each hit is recomputed with mjray's own triangle test, so
+  /// images match the other accelerators bit for bit; benchmarks turn it off to time Embree alone.
+  explicit EmbreeAccelerator(const World& world, int threads = 0, bool exact_hits = true);
   ~EmbreeAccelerator() override;
   EmbreeAccelerator(const EmbreeAccelerator&) = delete;
   EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
@@ -37,6 +39,7 @@ class EmbreeAccelerator final : public Accelerator {
 
   const World& world_;
   Bounds3 bounds_;
+  bool exact_hits_ = true;
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
   std::atomic<int64_t> device_bytes_{0};  ///< updated by Embree's memory monitor callback

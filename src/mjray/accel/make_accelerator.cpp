@@ -25,7 +25,7 @@ std::unique_ptr<Accelerator> make_accelerator(const World& world, const Accelera
   if (options.kind == "grid") return std::make_unique<UniformGrid>(world, options.grid_size);
   if (options.kind == "embree") {
 #ifdef MJRAY_HAVE_EMBREE
-    return std::make_unique<EmbreeAccelerator>(world, options.threads);
+    return std::make_unique<EmbreeAccelerator>(world, options.threads, options.embree_exact_hits);
 #else
     throw SceneError("accelerator 'embree' is not available: this mjray was built without Embree "
                      "(install libembree-dev and configure with -DMJRAY_WITH_EMBREE=ON)");

@@ -14,6 +14,7 @@ struct AcceleratorOptions {
   std::string kind = "bvh";  ///< "none", "grid", "bvh" or "embree"
   int grid_size = 0;         ///< voxels per axis for "grid"; 0 with kind "grid" = optimal
   int threads = 0;           ///< build threads, 0 = all cores
+  bool embree_exact_hits = true;  ///< "embree": refine hits with mjray's triangle test (see EmbreeAccelerator)
 };
 
 /// The names --accel accepts in this build.
