@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/io/image_writer.h"
+#include "support/scratch_files.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -24,12 +25,7 @@ struct RunResult {
   std::string err;  ///< stderr
 };
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_file;
 
 std::string quoted(const std::string& text) {
   std::string out = "'";
@@ -47,14 +43,8 @@ std::string tiny_scene(const std::string& output = "'out.png'", int width = 8, i
          ", {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, {gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n";
 }
 
-class GoldenCli : public ::testing::Test {
+class GoldenCli : public test::ScratchFolderTest {
  protected:
-  fs::path write(const fs::path& name, const std::string& body) {
-    const fs::path path = dir_ / name;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << body;
-    return path;
-  }
 
   /// Runs `mjray ARGS` from "/", capturing both streams into files of the run folder.
   RunResult run(const std::vector<std::string>& args) {
@@ -80,7 +70,6 @@ class GoldenCli : public ::testing::Test {
     return out;
   }
 
-  const fs::path dir_ = test::make_temp_dir("cli");
   const fs::path logs_ = test::make_temp_dir("cli-logs");
 };
 

@@ -16,6 +16,7 @@
 #include "mjray/render/renderer.h"
 #include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
+#include "support/scratch_files.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -127,10 +128,7 @@ TEST(GoldenRender, StatisticsCountWhatTheSceneImplies) {
 
 // --- through the program -------------------------------------------------------------------
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
-}
+using test::read_file;
 
 /// A scene slow enough to interrupt under brute force: many spheres.
 std::filesystem::path write_slow_scene(const std::filesystem::path& dir) {

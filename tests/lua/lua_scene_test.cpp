@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/lua/scene_loader.h"
+#include "support/scratch_files.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -55,15 +56,9 @@ std::string triangles_of(const ObjMesh& mesh) {
   return out;
 }
 
-class LuaTest : public ::testing::Test {
+class LuaTest : public test::ScratchFolderTest {
  protected:
   /// Writes `body` to dir_/name (creating folders) and returns its path.
-  fs::path write(const fs::path& name, const std::string& body) {
-    const fs::path path = dir_ / name;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << body;
-    return path;
-  }
 
   SceneDescription load(const std::string& script, const SceneLoadOptions& options = {}) {
     return load_scene(write("scene.lua", script), options);
@@ -82,7 +77,6 @@ class LuaTest : public ::testing::Test {
   /// "<dir>/scene.lua:LINE: ", the prefix of an error raised on that line.
   std::string at(int line) const { return (dir_ / "scene.lua").string() + ":" + std::to_string(line) + ": "; }
 
-  const fs::path dir_ = test::make_temp_dir("lua");
 };
 
 // --- core calls --------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/lua/scene_loader.h"
+#include "support/scratch_files.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -23,21 +24,10 @@ std::string render_call(const std::string& output = "'out.png'") {
          ", 4, 3, {0,0,10}, {0,0,-1}, {0,1,0}, 50, {0,0,0}, {gr.light({0,0,10}, {1,1,1}, {1,0,0})})\n";
 }
 
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::read_file;
 
-class LuaSandbox : public ::testing::Test {
+class LuaSandbox : public test::ScratchFolderTest {
  protected:
-  fs::path write(const fs::path& name, const std::string& body) {
-    const fs::path path = dir_ / name;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << body;
-    return path;
-  }
 
   SceneDescription load(const std::string& script, const SceneLoadOptions& options = {}) {
     return load_scene(write("scene.lua", script), options);
@@ -65,7 +55,6 @@ class LuaSandbox : public ::testing::Test {
     return options;
   }
 
-  const fs::path dir_ = test::make_temp_dir("sbx");
 };
 
 // --- refused by default ------------------------------------------------------------------

@@ -9,6 +9,7 @@
 
 #include "mjray/io/image_writer.h"
 #include "mjray/lua/scene_loader.h"
+#include "support/scratch_files.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -20,14 +21,8 @@ const std::string kRender =
     "gr.render(root, 'out.png', 4, 3, {0,0,10}, {0,0,-1}, {0,1,0}, 50, {0.1,0.1,0.1}, "
     "{gr.light({0,0,10}, {1,1,1}, {1,0,0})})\n";
 
-class LuaTextureTest : public ::testing::Test {
+class LuaTextureTest : public test::ScratchFolderTest {
  protected:
-  fs::path write(const fs::path& name, const std::string& body) {
-    const fs::path path = dir_ / name;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << body;
-    return path;
-  }
 
   SceneDescription load(const std::string& script) { return load_scene(write("scene.lua", script), {}); }
 
@@ -49,7 +44,6 @@ class LuaTextureTest : public ::testing::Test {
     return material ? phong_of(*material).texture.get() : nullptr;
   }
 
-  const fs::path dir_ = test::make_temp_dir("lua-texture");
 };
 
 // --- what the calls make ---------------------------------------------------------------------

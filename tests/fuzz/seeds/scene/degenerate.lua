@@ -1,0 +1,16 @@
+-- Degenerate numbers and shapes.
+local root = gr.node('root')
+local m = gr.material({0.5, 0.5, 0.5}, {0.2, 0.2, 0.2}, 25)
+local t = gr.mesh('flat', {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 1, 3}, {3, 3, 3}})
+t:set_material(m)
+root:add_child(t)
+local s = gr.nh_sphere('s', {0, 0, 0}, 1e-30)
+s:set_material(m)
+root:add_child(s)
+local b = gr.nh_box('b', {1e30, 0, 0}, 1e30)
+b:scale(1e30, 1e-30, 1)
+b:rotate('z', 1e30)
+root:add_child(b)
+root:translate(0/0, 1/0, -1/0)
+gr.render(root, 'out.png', 4, 4, {0, 0, 5}, {0, 0, -1e-30}, {0, 1e30, 0}, 179.99, {0.1, 0.1, 0.1},
+          {gr.light({0, 5, 5}, {1, 1, 1}, {0, 0, 0}), gr.arealight({0, 5, 5}, {1, 1, 1}, {1, 0, 0}, {1, 5, 5}, {0, 6, 5})})
