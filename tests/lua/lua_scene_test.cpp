@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/lua/scene_loader.h"
+#include "support/lua_script_test.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 
@@ -56,28 +57,7 @@ std::string triangles_of(const ObjMesh& mesh) {
   return out;
 }
 
-class LuaTest : public test::ScratchFolderTest {
- protected:
-  /// Writes `body` to dir_/name (creating folders) and returns its path.
-
-  SceneDescription load(const std::string& script, const SceneLoadOptions& options = {}) {
-    return load_scene(write("scene.lua", script), options);
-  }
-
-  /// The message load_scene throws for `script`, or "(no error)".
-  std::string error_of(const std::string& script, const SceneLoadOptions& options = {}) {
-    try {
-      load(script, options);
-    } catch (const SceneError& e) {
-      return e.what();
-    }
-    return "(no error)";
-  }
-
-  /// "<dir>/scene.lua:LINE: ", the prefix of an error raised on that line.
-  std::string at(int line) const { return (dir_ / "scene.lua").string() + ":" + std::to_string(line) + ": "; }
-
-};
+using LuaTest = test::LuaScriptTest;
 
 // --- core calls --------------------------------------------------------------------------
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/lua/scene_loader.h"
+#include "support/lua_script_test.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 
@@ -26,28 +27,12 @@ std::string render_call(const std::string& output = "'out.png'") {
 
 using test::read_file;
 
-class LuaSandbox : public test::ScratchFolderTest {
+class LuaSandbox : public test::LuaScriptTest {
  protected:
-
-  SceneDescription load(const std::string& script, const SceneLoadOptions& options = {}) {
-    return load_scene(write("scene.lua", script), options);
-  }
-
-  std::string error_of(const std::string& script, const SceneLoadOptions& options = {}) {
-    try {
-      load(script, options);
-    } catch (const SceneError& e) {
-      return e.what();
-    }
-    return "(no error)";
-  }
-
   /// The output name a script that ends with render_call(expr) produced.
   std::string result_of(const std::string& script, const SceneLoadOptions& options = {}) {
     return load(script, options).jobs.at(0).output.string();
   }
-
-  std::string at(int line) const { return (dir_ / "scene.lua").string() + ":" + std::to_string(line) + ": "; }
 
   static SceneLoadOptions unsafe() {
     SceneLoadOptions options;
