@@ -1,0 +1,100 @@
+// The original project's gr.* extensions: what they build, and their argument errors with
+// scene.lua:LINE.
+
+#include <gtest/gtest.h>
+
+#include "support/lua_script_test.h"
+
+namespace mjray {
+namespace {
+
+const std::string kRender =
+    "gr.render(root, 'out.png', 4, 3, {0,0,10}, {0,0,-1}, {0,1,0}, 50, {0.1,0.1,0.1}, lights)\n";
+
+class LuaExtensions : public test::LuaScriptTest {
+ protected:
+  /// The material of the single sphere a script puts under root.
+  Material material_of(const std::string& material_expression) {
+    const auto d = load("root = gr.node('root')\ns = gr.sphere('s')\ns:set_material(" + material_expression +
+                        ")\nroot:add_child(s)\nlights = {gr.light({0,0,10}, {1,1,1}, {1,0,0})}\n" + kRender);
+    return *d.jobs.at(0).root->children.at(0)->material;
+  }
+};
+
+TEST_F(LuaExtensions, MaterialsKeepTheirArgumentsInOrder) {
+  const auto reflective = std::get<ReflectiveMaterial>(material_of("gr.reflectivematerial({0.1,0.2,0.3}, {0.4,0.5,0.6}, 25, 0.75)"));
+  EXPECT_EQ(reflective.base.kd, Color(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(reflective.base.ks, Color(0.4f, 0.5f, 0.6f));
+  EXPECT_EQ(reflective.base.shininess, 25);
+  EXPECT_EQ(reflective.reflectivity, 0.75f);
+
+  const auto refracted = std::get<RefractiveMaterial>(material_of("gr.refractedmaterial({0,0,0}, {1,1,1}, 100, 1.0, 1.5)"));
+  EXPECT_EQ(refracted.reflectivity, 0);
+  EXPECT_EQ(refracted.eta_outside, 1.0f);
+  EXPECT_EQ(refracted.eta_inside, 1.5f);
+
+  const auto blend = std::get<RefractiveMaterial>(material_of("gr.reflectrefractmaterial({0,0,0}, {1,1,1}, 100, 0.25, 1.1, 1.33)"));
+  EXPECT_EQ(blend.reflectivity, 0.25f);
+  EXPECT_EQ(blend.eta_outside, 1.1f);
+  EXPECT_EQ(blend.eta_inside, 1.33f);
+
+  for (const char* name : {"fresneldiectricmaterial", "fresneldielectricmaterial"}) {
+    const auto glass = std::get<FresnelMaterial>(material_of(std::string("gr.") + name + "({0,0,0}, {1,1,1}, 100, 1.0, 1.52)"));
+    EXPECT_EQ(glass.eta_inside, 1.52f) << name;
+  }
+
+  const auto glossy = std::get<GlossyMaterial>(material_of("gr.glossyreflectivematerial({0,0,0}, {1,1,1}, 10, 0.8, 9)"));
+  EXPECT_EQ(glossy.reflectivity, 0.8f);
+  EXPECT_EQ(glossy.samples, 9);
+}
+
+TEST_F(LuaExtensions, AreaLightIsACornerAndTwoEdges) {
+  const auto d = load("root = gr.node('root')\n"
+                      "lights = {gr.arealight({1,5,1}, {0.5,0.6,0.7}, {1,0.1,0}, {3,5,1}, {1,5,4})}\n" + kRender);
+  const auto& light = std::get<AreaLight>(d.jobs.at(0).lights.at(0));
+  EXPECT_EQ(light.corner, Point3(1, 5, 1));
+  EXPECT_EQ(light.edge1, Vector3(2, 0, 0));
+  EXPECT_EQ(light.edge2, Vector3(0, 0, 3));
+  EXPECT_EQ(light.colour, Color(0.5f, 0.6f, 0.7f));
+  EXPECT_EQ(light.falloff[1], 0.1f);
+}
+
+TEST_F(LuaExtensions, ExtendedMeshKeepsNormalsAndUvsOnlyWhenAsked) {
+  write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\n");
+  const auto d = load("root = gr.node('root')\n"
+                      "a = gr.extendedmesh('a', true, read_extended_obj('quad.obj'))\n"
+                      "b = gr.extendedmesh('b', false, read_extended_obj('quad.obj'))\n"
+                      "root:add_child(a)\nroot:add_child(b)\n"
+                      "lights = {gr.light({0,0,10}, {1,1,1}, {1,0,0})}\n" + kRender);
+  const auto& with_uvs = *d.jobs.at(0).root->children.at(0)->mesh;
+  const auto& without = *d.jobs.at(0).root->children.at(1)->mesh;
+  EXPECT_EQ(with_uvs.uvs.size(), 3u);
+  EXPECT_EQ(with_uvs.triangles[0][1].uv, 1);
+  EXPECT_EQ(with_uvs.normals.size(), 1u);
+  EXPECT_EQ(without.uvs.size(), 0u);
+  EXPECT_EQ(without.triangles[0][1].uv, -1);
+  EXPECT_EQ(without.triangles[0][1].normal, 0);
+}
+
+TEST_F(LuaExtensions, WrongArgumentsNameTheCallAndLine) {
+  EXPECT_EQ(error_of("\nm = gr.reflectivematerial({1,1}, {1,1,1}, 10, 0.5)\n"),
+            at(2) + "gr.reflectivematerial: argument 1 (kd) must be a table of 3 numbers, got a table of 2 values");
+  EXPECT_EQ(error_of("m = gr.reflectivematerial({1,1,1}, {1,1,1}, 10, 1.5)\n"),
+            at(1) + "gr.reflectivematerial: argument 4 (reflectivity) must be a number from 0 to 1, got a number");
+  EXPECT_EQ(error_of("\n\nm = gr.refractedmaterial({0,0,0}, {1,1,1}, 10, 1.0, 0)\n"),
+            at(3) + "gr.refractedmaterial: argument 5 (eta_t) must be a positive index of refraction, got a number");
+  EXPECT_EQ(error_of("m = gr.fresneldiectricmaterial({0,0,0}, {1,1,1}, 10, 'glass', 1.5)\n"),
+            at(1) + "gr.fresneldiectricmaterial: argument 4 (eta_i) must be a number, got the string 'glass'");
+  EXPECT_EQ(error_of("m = gr.glossyreflectivematerial({0,0,0}, {1,1,1}, 10, 0.5, 2.5)\n"),
+            at(1) + "gr.glossyreflectivematerial: argument 5 (samples) must be a whole number from 1 to 4096, got a number");
+  EXPECT_EQ(error_of("l = gr.arealight({0,5,0}, {1,1,1}, {1,0,0}, {1,5,0}, {2,5,0})\n"),
+            at(1) + "gr.arealight: the three corners lie on one line, so the light has no area");
+  EXPECT_EQ(error_of("l = gr.arealight({0,5,0}, {1,1,1}, {1,0,0}, {1,5,0})\n"),
+            at(1) + "gr.arealight: argument 5 (corner2) must be a table of 3 numbers, got nothing");
+  EXPECT_EQ(error_of("\nm = gr.extendedmesh('m', true, {})\n"),
+            at(2) + "gr.extendedmesh: argument 3 (mesh data) must be the result of read_extended_obj('file.obj'), got an empty table");
+  EXPECT_EQ(error_of("d = read_extended_obj('missing.obj')\n"), at(1) + "read_extended_obj: cannot find 'missing.obj'");
+}
+
+}  // namespace
+}  // namespace mjray
