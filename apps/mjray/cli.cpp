@@ -1,7 +1,9 @@
 #include "cli.h"
 
+#include <cctype>
 #include <charconv>
 #include <cstdlib>
+#include <limits>
 #include <functional>
 #include <map>
 
@@ -16,6 +18,27 @@ long long parse_integer(const std::string& option, const std::string& text, long
     throw UsageError(option + " expects a whole number from " + std::to_string(lo) + " to " +
                      std::to_string(hi) + ", got '" + text + "'");
   return value;
+}
+
+/// "BYTES", "NNKiB", "NNMiB" or "NNGiB" (also "K", "M", "G", "KB", "MB", "GB", all binary).
+size_t parse_bytes(const std::string& option, const std::string& text) {
+  const std::string usage = option + " expects a size like 512MiB, 4GiB or a number of bytes, got '" + text + "'";
+  unsigned long long value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end == text.data()) throw UsageError(usage);
+  std::string suffix(end, text.data() + text.size());
+  for (char& c : suffix) c = char(std::toupper(static_cast<unsigned char>(c)));
+  int shift = 0;
+  if (suffix.empty() || suffix == "B") shift = 0;
+  else if (suffix == "K" || suffix == "KB" || suffix == "KIB") shift = 10;
+  else if (suffix == "M" || suffix == "MB" || suffix == "MIB") shift = 20;
+  else if (suffix == "G" || suffix == "GB" || suffix == "GIB") shift = 30;
+  else throw UsageError(usage);
+  if (value > (std::numeric_limits<unsigned long long>::max() >> shift) >> 1) throw UsageError(usage);
+  const unsigned long long bytes = value << shift;
+  constexpr unsigned long long kMinimum = 1 << 20;
+  if (bytes != 0 && bytes < kMinimum) throw UsageError(option + " must be at least 1MiB (or 0 for no limit), got '" + text + "'");
+  return size_t(bytes);
 }
 
 }  // namespace
@@ -47,6 +70,9 @@ options:
   --quiet              no progress output
   --resume             continue an interrupted render
   --unsafe-lua         give the script the full Lua standard library
+  --lua-memory SIZE    most memory the script's Lua state may use, e.g. 512MiB (default 4GiB;
+                       0 = no limit)
+  --scene-timeout S    stop a script still running after S seconds (default: no limit)
   -h, --help           this text
   --version            the version
 
@@ -72,6 +98,14 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
          const double t = std::strtod(v.c_str(), &end);
          if (v.empty() || *end != '\0' || !(t > 0 && t <= 1)) throw UsageError(o + " expects a number in (0, 1], got '" + v + "'");
          cl.antialias_threshold = float(t);
+       }},
+      {"--lua-memory", [&](auto& o, auto& v) { cl.load.lua_memory_bytes = parse_bytes(o, v); }},
+      {"--scene-timeout", [&](auto& o, auto& v) {
+         char* end = nullptr;
+         const double t = std::strtod(v.c_str(), &end);
+         if (v.empty() || *end != '\0' || !(t > 0 && t <= 1e6))
+           throw UsageError(o + " expects a number of seconds from 0 to 1000000, got '" + v + "'");
+         cl.load.timeout_seconds = t;
        }},
       {"--output", [&](auto&, auto& v) { cl.output = v; }},
       {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},

@@ -2,6 +2,7 @@
 // write the image.
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <fstream>
@@ -136,6 +137,9 @@ JobStatistics render_job(const CommandLine& cl, const RenderJob& job, size_t job
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) then fails writes with EFBIG, reported like a full disk,
+  // instead of killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   CommandLine cl;
   try {
     cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
@@ -166,6 +170,9 @@ int main(int argc, char** argv) {
       std::filesystem::create_directories(*cl.outdir, ec);
       if (ec) throw OutputError("cannot create the output folder '" + cl.outdir->string() + "': " + ec.message());
     }
+    // Before rendering: no output may replace the script or a file it read.
+    for (const RenderJob& job : scene.jobs) check_not_an_input(scene, output_path(cl, job), job.where, "gr.render");
+    if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
     install_interrupt_handlers();
     std::vector<JobStatistics> statistics;
     for (size_t i = 0; i < scene.jobs.size(); ++i) {

@@ -23,7 +23,9 @@ shared=${MJRAY_SHARED_DIR:-$root/../shared}
 
 # Build the targets (instrumented with ASan + UBSan and libFuzzer coverage).
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DMJRAY_FUZZ=ON -DBUILD_TESTING=OFF \
+  clang=$(command -v clang++ || command -v clang++-14 || true)
+  [ -n "$clang" ] || { echo "fuzz: clang++ is missing (apt-get install clang-14 libclang-rt-14-dev)" >&2; exit 2; }
+  cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$clang" -DMJRAY_FUZZ=ON -DBUILD_TESTING=OFF \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 fi
 cmake --build "$build" --target "${targets[@]}" --parallel "$(nproc)" >/dev/null

@@ -7,15 +7,28 @@
 
 namespace mjray {
 
+namespace {
+
+/// v divided by its largest magnitude component (or v itself when zero or not finite), so that
+/// squaring it for a length neither overflows (1e30) nor underflows (1e-30).
+Vector3 rescaled(const Vector3& v) {
+  const float largest = max_component(abs(v));
+  return largest > 0 && std::isfinite(largest) ? v / largest : v;
+}
+
+}  // namespace
+
 PinholeCamera::PinholeCamera(const CameraDescription& d, int width, int height)
     : eye_(d.eye), width_(float(width)), height_(float(height)) {
-  if (!(length(d.view) > 0) || !is_finite(d.view)) throw SceneError("the view direction is zero");
+  const Vector3 view = rescaled(d.view), up = rescaled(d.up);
+  if (!(length(view) > 0) || !is_finite(view)) throw SceneError("the view direction is zero");
   if (!(d.fovy_degrees > 0 && d.fovy_degrees < 180))
     throw SceneError("fovy must be between 0 and 180 degrees, got " + std::to_string(d.fovy_degrees));
-  forward_ = normalize(d.view);
+  if (!is_finite(d.eye) || !is_finite(up)) throw SceneError("the eye and up vector must be finite");
+  forward_ = normalize(view);
   // Compute up orthogonal to the view (Gram–Schmidt) and right = forward × up.
-  const Vector3 up_ortho = d.up - forward_ * dot(d.up, forward_);
-  if (!(length(up_ortho) > 1e-6f * length(d.up))) throw SceneError("the up vector is parallel to the view direction");
+  const Vector3 up_ortho = up - forward_ * dot(up, forward_);
+  if (!(length(up_ortho) > 1e-6f * length(up))) throw SceneError("the up vector is parallel to the view direction");
   up_ = normalize(up_ortho);
   right_ = cross(forward_, up_);
   half_height_ = float(std::tan(double(d.fovy_degrees) * std::numbers::pi / 360.0));

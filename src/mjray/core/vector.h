@@ -67,7 +67,23 @@ constexpr Vector3 cross(const Vector3& a, const Vector3& b) {
 }
 
 inline float length(const Vector3& v) { return std::sqrt(dot(v, v)); }
-inline Vector3 normalize(const Vector3& v) { return v / length(v); }
+
+/// v at unit length when its squared length under- or overflows a float (tiny or huge
+/// transformed normals, near-degenerate triangles); the zero vector stays zero, never NaN.
+inline Vector3 normalize_rescaled(const Vector3& v) {
+  const float largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+  if (!(largest > 0)) return v * 0.f;      // zero stays zero (and NaN stays NaN)
+  if (!std::isfinite(largest)) return {};  // an infinite vector has no direction
+  const Vector3 w = v / largest;
+  return w / std::sqrt(dot(w, w));
+}
+
+/// v at unit length; the common case costs one comparison more than v / length(v).
+inline Vector3 normalize(const Vector3& v) {
+  const float squared = dot(v, v);
+  if (squared > 1e-30f && squared < 1e30f) [[likely]] return v / std::sqrt(squared);
+  return normalize_rescaled(v);
+}
 inline Normal3 normalize(const Normal3& n) { return Normal3(normalize(Vector3(n))); }
 
 /// The normal flipped, if needed, to lie in the same hemisphere as v.

@@ -318,6 +318,14 @@ Image read_png(const fs::path& path, FILE* file) {
   if (size_t(width) * size_t(height) > kMaxReadPixels)
     fail_read(path, "image too large (" + std::to_string(width) + "x" + std::to_string(height) +
                         ")");
+  // Compute the least data such an image needs: one bit per pixel and a filter byte per row,
+  // deflated at most 1032:1. A smaller file is truncated, and must not cost gigabytes first.
+  std::error_code ec;
+  const auto file_size = fs::file_size(path, ec);
+  const size_t least_raw = size_t(height) + size_t(width) * size_t(height) / 8;
+  if (!ec && least_raw / 1032 > file_size + 1024)
+    fail_read(path, "file is truncated (" + std::to_string(file_size) + " bytes cannot hold a " +
+                        std::to_string(width) + "x" + std::to_string(height) + " image)");
   const size_t stride = size_t(width) * 3;
   std::vector<uint8_t> rgb(stride * height);
   std::vector<png_bytep> rows(height);

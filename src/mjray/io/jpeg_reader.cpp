@@ -1,11 +1,13 @@
 #include "mjray/io/jpeg_reader.h"
 
 #include <csetjmp>
+#include <memory>
 #include <string>
 #include <vector>
 
 // jpeglib.h needs FILE and size_t declared first.
 #include <jpeglib.h>
+#include <jerror.h>
 
 #include "mjray/core/error.h"
 
@@ -32,6 +34,19 @@ void on_jpeg_error(j_common_ptr info) {
 // Corrupt-data warnings still decode an image; keep them off the user's terminal.
 void on_jpeg_message(j_common_ptr) {}
 
+/// Most memory libjpeg may take for whole-image buffers (progressive files): a few hundred
+/// bytes of file can declare a 65535 x 65535 image.
+constexpr long kMaxJpegWorkingMemory = 512L << 20;
+
+/// Data that ends before the image does (at the end of the file or at the next marker) is an
+/// error, not a grey image: otherwise a few hundred bytes with a large declared size decode
+/// to gigabytes of filler.
+void on_jpeg_emit(j_common_ptr info, int level) {
+  const int code = info->err->msg_code;
+  if (level < 0 && (code == JWRN_JPEG_EOF || code == JWRN_HIT_MARKER)) on_jpeg_error(info);
+  if (level < 0) ++info->err->num_warnings;
+}
+
 /// A libjpeg decompression session; destroyed by its owner, outside any setjmp frame.
 struct JpegReader {
   jpeg_decompress_struct info{};
@@ -48,9 +63,11 @@ bool read_jpeg_header(JpegReader& r, FILE* file) {
   r.info.err = jpeg_std_error(&r.error.manager);
   r.error.manager.error_exit = on_jpeg_error;
   r.error.manager.output_message = on_jpeg_message;
+  r.error.manager.emit_message = on_jpeg_emit;
   if (setjmp(r.error.jump)) return false;
   jpeg_create_decompress(&r.info);
   r.created = true;
+  r.info.mem->max_memory_to_use = kMaxJpegWorkingMemory;
   jpeg_stdio_src(&r.info, file);
   jpeg_read_header(&r.info, TRUE);
   r.info.out_color_space = JCS_RGB;
@@ -85,8 +102,10 @@ Image read_jpeg(const std::filesystem::path& path, FILE* file, size_t max_pixels
   const size_t width = r.info.image_width, height = r.info.image_height;
   if (width == 0 || height == 0 || width * height > max_pixels)
     fail(path, "bad JPEG size " + std::to_string(width) + "x" + std::to_string(height));
-  std::vector<unsigned char> rgb(width * height * 3);
-  if (!read_jpeg_rows(r, rgb.data(), width, height)) fail(path, std::string("libjpeg: ") + r.error.message);
+  // Left uninitialised: only rows the decoder reaches are touched, so a truncated file with a
+  // large declared size fails before it costs memory.
+  const std::unique_ptr<unsigned char[]> rgb(new unsigned char[width * height * 3]);
+  if (!read_jpeg_rows(r, rgb.get(), width, height)) fail(path, std::string("libjpeg: ") + r.error.message);
   Image image{int(width), int(height)};
   for (size_t i = 0; i < width * height; ++i)
     image.at(int(i % width), int(i / width)) =

@@ -96,6 +96,7 @@ int read_extended_obj(lua_State* L) {
   const std::string name = arg_string(L, 1, "read_extended_obj", "file name");
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError("read_extended_obj: cannot find '" + name + "'");
+  record_input(L, *path);
   push_shared(L, std::make_shared<const ObjMesh>(load_obj(*path)), kObjDataType);
   return 1;
 }
@@ -123,6 +124,7 @@ int gr_extendedmesh(lua_State* L) {
   node->where = caller_location(L);
   node->shape = NodeShape::kMesh;
   node->mesh = std::move(mesh);
+  context(L).nodes.push_back(node);  // so that a cycle through it is broken at the end
   push_shared(L, std::move(node), kNodeType);
   return 1;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace mjray::lua {
 
@@ -66,12 +67,21 @@ std::string arg_string(lua_State* L, int index, const char* fn, const char* what
   return std::string(text, length);
 }
 
-/// A finite number; numeric strings are accepted, as luaL_checknumber does in the course binding.
+namespace {
+
+/// Scene numbers become floats: a larger magnitude would turn into infinity.
+bool fits_float(double value) { return std::abs(value) <= double(std::numeric_limits<float>::max()); }
+
+}  // namespace
+
+/// A finite number within float range; numeric strings are accepted, as luaL_checknumber does
+/// in the course binding.
 double arg_number(lua_State* L, int index, const char* fn, const char* what) {
   int is_number = 0;
   const double value = lua_tonumberx(L, index, &is_number);
   if (!is_number) bad_argument(L, fn, index, what, "a number");
   if (!std::isfinite(value)) bad_argument(L, fn, index, what, "a finite number");
+  if (!fits_float(value)) bad_argument(L, fn, index, what, "a number of magnitude at most 3.4e38");
   return value;
 }
 
@@ -87,6 +97,7 @@ std::string read_tuple3(lua_State* L, int index, std::array<double, 3>& out) {
     std::string problem;
     if (!is_number) problem = describe(L, -1);
     else if (!std::isfinite(out[size_t(i)])) problem = "not finite";
+    else if (!fits_float(out[size_t(i)])) problem = "beyond 3.4e38";
     lua_pop(L, 1);
     if (!problem.empty()) return "got a table whose entry " + std::to_string(i + 1) + " is " + problem;
   }

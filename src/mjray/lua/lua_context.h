@@ -1,6 +1,7 @@
 #pragma once
 /// State shared by the Lua bindings while one script runs (internal to lua/).
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -15,6 +16,45 @@ extern "C" {
 #include "mjray/scene/scene_description.h"
 
 namespace mjray::lua {
+
+/// The limits a script runs under and how close it is to them; the Lua state's allocator
+/// data, so that the allocator, the budget hook and `guarded` reach it without allocating.
+struct ScriptLimits {
+  size_t memory_limit = 0;      ///< bytes; 0 = none
+  size_t memory_used = 0;       ///< bytes the Lua state holds now
+  size_t memory_peak = 0;
+  bool enforcing = false;       ///< off while the libraries are installed
+  /// Nonzero while a C++ binding runs: its own Lua allocations may pass the cap, since a Lua
+  /// memory error would longjmp over its C++ locals; the script's next allocation fails.
+  int grace = 0;
+  lua_State* L = nullptr;       ///< the main thread, to locate a refused allocation
+  std::filesystem::path script; ///< for messages with no Lua line
+  FileLocation memory_where;    ///< the Lua line of the last refused allocation
+  bool memory_refused = false;
+
+  uint64_t instruction_limit = 0;  ///< 0 = none
+  uint64_t instructions = 0;       ///< counted in steps of the hook interval
+  double timeout_seconds = 0;      ///< 0 = none
+  std::chrono::steady_clock::time_point deadline{};
+  bool budget_exceeded = false;
+  std::string budget_message;      ///< "file:line: ..." of the first overrun
+};
+
+/// The limits of the script running in L.
+inline ScriptLimits& script_limits(lua_State* L) {
+  void* ud = nullptr;
+  lua_getallocf(L, &ud);
+  return *static_cast<ScriptLimits*>(ud);
+}
+
+/// Pushes `text` even past the memory cap, for C functions that hold C++ strings while they
+/// push: a Lua memory error there would longjmp over their destructors.
+inline void push_string_past_cap(lua_State* L, const std::string& text) {
+  ScriptLimits& limits = script_limits(L);
+  ++limits.grace;
+  lua_pushlstring(L, text.data(), text.size());
+  --limits.grace;
+}
 
 /// A node as the script builds it: mutable until a gr.render call snapshots it.
 struct LuaNode {
@@ -74,6 +114,9 @@ void install_sandbox(lua_State* L);
 /// scene path (writes, os.remove and os.rename: beside the script), and forces loadfile to text.
 void install_path_resolution(lua_State* L);
 
+/// Adds a file the script reads to SceneDescription::inputs.
+void record_input(lua_State* L, const std::filesystem::path& path);
+
 /// "file:line" of the Lua code that called the running C function.
 FileLocation caller_location(lua_State* L);
 
@@ -83,14 +126,21 @@ std::string not_found_message(const std::string& name);
 /// A C function that reports C++ exceptions as Lua errors at the caller's line (the
 /// exception is gone before lua_error unwinds, so no C++ destructor is skipped). F itself must
 /// report problems by throwing: a luaL_error/luaL_check* inside F would longjmp over F's
-/// C++ locals.
+/// C++ locals. While F runs, its Lua allocations may pass the memory cap (see ScriptLimits).
 template <int (*F)(lua_State*)>
 int guarded(lua_State* L) {
+  ScriptLimits& limits = script_limits(L);
+  ++limits.grace;
+  int results = -1;
   try {
-    return F(L);
+    results = F(L);
   } catch (const std::exception& e) {
     lua_pushstring(L, (caller_location(L).to_string() + ": " + e.what()).c_str());
+  } catch (...) {
+    lua_pushstring(L, (caller_location(L).to_string() + ": internal error in a gr binding").c_str());
   }
+  --limits.grace;
+  if (results >= 0) return results;
   return lua_error(L);
 }
 

@@ -108,7 +108,7 @@ int locate_original_error(lua_State* L) {
   lua_pop(L, 1);
   if (!raised_by_original) return 1;  // from Lua code the original ran: already located
   const std::string message = caller_location(L).to_string() + ": " + lua_tostring(L, 1);
-  lua_pushstring(L, message.c_str());
+  push_string_past_cap(L, message);
   return 1;
 }
 
@@ -132,6 +132,7 @@ int open_checked(lua_State* L) {
     throw ArgumentError(std::string("io.open for writing ('") + mode + "') is not allowed: " + kUnsafeHint);
   const std::string name = lua_tostring(L, 1);
   const std::string path = writes ? write_path(context(L), name).string() : checked_read_path(L, "io.open", name);
+  if (!writes) record_input(L, path);
   lua_pushstring(L, path.c_str());
   lua_replace(L, 1);
   return 0;
@@ -153,6 +154,7 @@ int path_checked(lua_State* L) {
     return 0;
   }
   const std::string path = checked_read_path(L, kName, lua_tostring(L, 1));
+  record_input(L, path);
   lua_pushstring(L, path.c_str());
   lua_replace(L, 1);
   return 0;
@@ -248,6 +250,7 @@ int scene_searcher(lua_State* L) {
       if (!std::filesystem::is_regular_file(candidate, ec)) continue;
       if (!ctx.options.unsafe_lua && !may_read(ctx, candidate)) continue;
       const std::string path = candidate.lexically_normal().string();
+      record_input(L, path);
       if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK)
         throw ArgumentError("error loading module '" + name + "' from file '" + path + "':\n\t" + lua_tostring(L, -1));
       lua_pushstring(L, path.c_str());
@@ -273,6 +276,7 @@ int builtin_readobj_impl(lua_State* L) {
   const std::string name = lua_tostring(L, 1);
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError("readobj: " + not_found_message(name));
+  record_input(L, *path);
   ObjMesh mesh;
   try {
     mesh = load_obj(*path);

@@ -1,7 +1,14 @@
 #include "mjray/lua/scene_loader.h"
 
+#include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 extern "C" {
@@ -47,6 +54,10 @@ FileLocation caller_location(lua_State* L) {
   return {context(L).script.string(), 0};
 }
 
+void record_input(lua_State* L, const std::filesystem::path& path) {
+  context(L).description->inputs.push_back(path);
+}
+
 std::string not_found_message(const std::string& name) {
   return "cannot find '" + name +
          "' (looked in the scene's folder, its parent folders, their Assets/ folders and the working directory)";
@@ -84,8 +95,129 @@ int describe_error_value(lua_State* L) {
   const std::string what = type == LUA_TNIL ? std::string("nil") : std::string("a ") + lua_typename(L, type);
   const std::string message =
       caller_location(L).to_string() + ": the script raised an error value that is not a string (" + what + ")";
-  lua_pushstring(L, message.c_str());
+  push_string_past_cap(L, message);
   return 1;
+}
+
+// --- resource limits -----------------------------------------------------------------------
+
+/// Lua instructions between two budget checks.
+constexpr int kHookInterval = 1000;
+
+/// "64 MiB", "4 GiB" or "1000 bytes".
+std::string format_bytes(size_t bytes) {
+  constexpr size_t kMiB = size_t(1) << 20, kGiB = size_t(1) << 30;
+  if (bytes >= kGiB && bytes % kGiB == 0) return std::to_string(bytes / kGiB) + " GiB";
+  if (bytes >= kMiB) return std::to_string((bytes + kMiB / 2) / kMiB) + " MiB";
+  return std::to_string(bytes) + " bytes";
+}
+
+/// The Lua line running in L (level 0 is the innermost), or the script when none is.
+FileLocation running_location(lua_State* L, const std::filesystem::path& script) {
+  lua_Debug ar;
+  for (int level = 0; lua_getstack(L, level, &ar); ++level) {
+    lua_getinfo(L, "Sl", &ar);
+    if (ar.currentline > 0) {
+      const char* source = ar.source;
+      return {(source && source[0] == '@') ? source + 1 : ar.short_src, ar.currentline};
+    }
+  }
+  return {script.string(), 0};
+}
+
+/// lua_Alloc with the --lua-memory cap. Shrinking never fails; growing fails past the cap
+/// (Lua then collects garbage and tries once more before raising its memory error).
+void* limited_alloc(void* ud, void* block, size_t old_size, size_t new_size) {
+  auto& limits = *static_cast<ScriptLimits*>(ud);
+  if (block == nullptr) old_size = 0;  // old_size then encodes the kind of object
+  if (new_size == 0) {
+    std::free(block);
+    limits.memory_used -= old_size;
+    return nullptr;
+  }
+  if (new_size > old_size && limits.memory_limit != 0 && limits.enforcing && limits.grace == 0 &&
+      limits.memory_used - old_size + new_size > limits.memory_limit) {
+    limits.memory_refused = true;
+    // Reading the call stack allocates nothing, and Lua keeps it consistent wherever it allocates.
+    limits.memory_where = running_location(limits.L, limits.script);
+    return nullptr;
+  }
+  void* grown = std::realloc(block, new_size);
+  if (grown != nullptr) {
+    limits.memory_used = limits.memory_used - old_size + new_size;
+    limits.memory_peak = std::max(limits.memory_peak, limits.memory_used);
+  }
+  return grown;
+}
+
+/// Count hook: stops the script once it passes its instruction or time budget. After the
+/// first overrun it fires on every instruction, so a script's own pcall cannot swallow it.
+void budget_hook(lua_State* L, lua_Debug*) {
+  ScriptLimits& limits = script_limits(L);
+  limits.grace = 0;  // Lua code is running, so no binding is
+  limits.instructions += kHookInterval;
+  if (!limits.budget_exceeded) {
+    const bool out_of_instructions = limits.instruction_limit != 0 && limits.instructions > limits.instruction_limit;
+    const bool out_of_time = limits.timeout_seconds > 0 && std::chrono::steady_clock::now() > limits.deadline;
+    if (!out_of_instructions && !out_of_time) return;
+    // No C++ object may be alive when lua_error unwinds this frame: build the text in a buffer.
+    const FileLocation where = running_location(L, limits.script);
+    char text[160];
+    if (out_of_time)
+      std::snprintf(text, sizeof text, "the script ran longer than %g s (the --scene-timeout limit)", limits.timeout_seconds);
+    else
+      std::snprintf(text, sizeof text, "the script ran more than %llu Lua instructions (the instruction limit)",
+                    static_cast<unsigned long long>(limits.instruction_limit));
+    limits.budget_message = where.to_string() + ": " + text;
+    limits.budget_exceeded = true;
+  }
+  lua_sethook(L, budget_hook, LUA_MASKCOUNT, 1);
+  lua_pushstring(L, limits.budget_message.c_str());
+  lua_error(L);
+}
+
+/// Last resort for --scene-timeout: a script stuck inside one library call never reaches the
+/// hook, so past the deadline and a grace period the process ends with the usual error exit.
+class Watchdog {
+ public:
+  Watchdog(double timeout_seconds, std::string script) {
+    if (!(timeout_seconds > 0)) return;
+    const double grace = std::max(2.0, timeout_seconds / 2);
+    const auto limit = std::chrono::duration<double>(timeout_seconds + grace);
+    thread_ = std::thread([this, limit, timeout_seconds, script = std::move(script)] {
+      std::unique_lock lock(mutex_);
+      if (done_cv_.wait_for(lock, limit, [this] { return done_; })) return;
+      std::fprintf(stderr, "mjray: error: %s: the script is still running %g s after the %g s --scene-timeout "
+                   "(stuck inside one library call); stopping\n", script.c_str(),
+                   std::chrono::duration<double>(limit).count() - timeout_seconds, timeout_seconds);
+      std::fflush(stderr);
+      std::_Exit(1);
+    });
+  }
+  Watchdog(const Watchdog&) = delete;
+  Watchdog& operator=(const Watchdog&) = delete;
+  ~Watchdog() {
+    if (!thread_.joinable()) return;
+    {
+      std::lock_guard lock(mutex_);
+      done_ = true;
+    }
+    done_cv_.notify_one();
+    thread_.join();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable done_cv_;
+  bool done_ = false;
+  std::thread thread_;
+};
+
+/// lua_atpanic: an error outside any protected call (only while the libraries are installed).
+int on_panic(lua_State* L) {
+  const char* message = lua_tostring(L, -1);
+  std::fprintf(stderr, "mjray: error: Lua panic: %s\n", message ? message : "(no message)");
+  std::abort();
 }
 
 }  // namespace
@@ -101,9 +233,17 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   ctx.options = options;
   ctx.description = &description;
 
-  std::unique_ptr<lua_State, decltype(&lua_close)> state(luaL_newstate(), &lua_close);
+  // Compute the state on the capped allocator; the cap and budget start with the script.
+  lua::ScriptLimits limits;
+  limits.memory_limit = options.lua_memory_bytes;
+  limits.instruction_limit = options.instruction_limit;
+  limits.timeout_seconds = options.timeout_seconds;
+  limits.script = script;
+  std::unique_ptr<lua_State, decltype(&lua_close)> state(lua_newstate(lua::limited_alloc, &limits), &lua_close);
   if (!state) throw SceneError("cannot create a Lua state (out of memory)");
   lua_State* L = state.get();
+  limits.L = L;
+  lua_atpanic(L, lua::on_panic);
   luaL_openlibs(L);
   lua::set_context(L, &ctx);
   // The sandbox goes last: it rebuilds package.searchers from what compatibility installed.
@@ -121,12 +261,48 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
 
   // Compute: load and run the chunk; errors arrive as "file:line: message" strings.
   lua_pushcfunction(L, lua::describe_error_value);
-  if (luaL_loadfilex(L, script.c_str(), "t") != LUA_OK || lua_pcall(L, 0, 0, 1) != LUA_OK) {
+  limits.deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(options.timeout_seconds));
+  lua_sethook(L, lua::budget_hook, LUA_MASKCOUNT, lua::kHookInterval);
+  limits.enforcing = true;
+  int status = LUA_OK;
+  {
+    const lua::Watchdog watchdog(options.timeout_seconds, script.string());
+    status = luaL_loadfilex(L, script.c_str(), "t");
+    if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
+  }
+  limits.enforcing = false;
+  if (status != LUA_OK) {
+    if (limits.budget_exceeded) throw SceneError(limits.budget_message);
+    if (status == LUA_ERRMEM) {
+      const FileLocation where = limits.memory_where.file.empty() ? FileLocation{script.string(), 0} : limits.memory_where;
+      throw SceneError(where.to_string() + ": the script needs more than " + lua::format_bytes(limits.memory_limit) +
+                       " of Lua memory (the --lua-memory limit)");
+    }
     const char* message = lua_tostring(L, -1);
     throw SceneError(message ? message : script.string() + ": the script raised an error that is not a string");
   }
   if (description.jobs.empty()) throw SceneError(script.string() + ": the scene never calls gr.render");
   return description;
+}
+
+void check_not_an_input(const SceneDescription& scene, const std::filesystem::path& output,
+                        const FileLocation& where, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path target = fs::weakly_canonical(fs::absolute(output, ec), ec);
+  std::vector<fs::path> inputs = scene.inputs;
+  inputs.insert(inputs.begin(), scene.script);
+  for (const fs::path& input : inputs) {
+    std::error_code ignored;
+    // equivalent() also catches hard links; canonical paths catch a target not written yet.
+    const bool same = fs::equivalent(output, input, ignored) || fs::weakly_canonical(fs::absolute(input, ignored), ignored) == target;
+    if (!same) continue;
+    const std::string kind = input == scene.script ? "the scene script itself" : "a file the scene reads";
+    throw SceneError(where.to_string() + ": " + what + " would overwrite '" + output.string() + "', which is " + kind +
+                     "; choose another output file");
+  }
 }
 
 }  // namespace mjray

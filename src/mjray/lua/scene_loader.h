@@ -1,7 +1,10 @@
 #pragma once
 /// Runs a scene script and returns what it describes.
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "mjray/scene/scene_description.h"
 
@@ -14,15 +17,35 @@ enum class TransformOrder {
   kPost,  ///< old skeleton, OpenGL style: M = M·T
 };
 
+/// Default cap on the Lua state's memory (--lua-memory): far above any real scene's needs,
+/// below what would push a 24 GiB machine into swap with the render's own buffers.
+inline constexpr size_t kDefaultLuaMemoryBytes = size_t(4) << 30;
+
 /// How to run the script.
 struct SceneLoadOptions {
   bool unsafe_lua = false;  ///< give the script the full standard library
   TransformOrder transform_order = TransformOrder::kAuto;
+  /// Most bytes the Lua state may hold; past it the allocation fails with a SceneError
+  /// naming the line. 0 = no cap.
+  size_t lua_memory_bytes = kDefaultLuaMemoryBytes;
+  /// Longest the script may run, in seconds (--scene-timeout); 0 = no limit. Checked between
+  /// Lua instructions; a script stuck longer than max(2 s, half the timeout) beyond it inside
+  /// one library call (e.g. a pathological string pattern) ends the process with exit code 1.
+  double timeout_seconds = 0;
+  /// Most Lua VM instructions the script may run (deterministic, for tests and fuzzing);
+  /// 0 = no limit.
+  uint64_t instruction_limit = 0;
 };
 
 /// Runs `script` and collects its gr.render calls. Throws SceneError with "file:line: problem"
 /// for syntax errors, runtime errors, bad gr.* arguments and sandbox violations, and when the
 /// script renders nothing.
 SceneDescription load_scene(const std::filesystem::path& script, const SceneLoadOptions& options);
+
+/// Throws SceneError("WHERE: WHAT would overwrite 'FILE', which the scene reads ...") when
+/// `output` is the script or one of scene.inputs (compared as canonical paths, so links and
+/// "../" spellings are caught). `what` names the writer ("gr.render", "--stats-json").
+void check_not_an_input(const SceneDescription& scene, const std::filesystem::path& output,
+                        const FileLocation& where, const std::string& what);
 
 }  // namespace mjray

@@ -60,6 +60,7 @@ int gr_filetexture(lua_State* L) {
   if (name.empty()) bad_argument(L, fn, 1, "file name", "a file name");
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
+  record_input(L, *path);
   ImageTexture texture;
   try {
     texture.image = read_image(*path);

@@ -1,7 +1,11 @@
 #include "mjray/scene/flatten.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 namespace mjray {
 
@@ -14,14 +18,72 @@ double determinant3(const Matrix4& m) {
          a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
 }
 
+/// Every entry finite and within float range: geometry is stored and intersected as floats.
+bool fits_float(const Matrix4& m) {
+  for (const auto& row : m.m)
+    for (const double x : row)
+      if (!(std::abs(x) <= double(std::numeric_limits<float>::max()))) return false;
+  return true;
+}
+
+/// What one emitted instance of a node costs: primitives plus the mesh vertices it copies.
+uint64_t own_size(const SceneNode& node) {
+  if (node.shape == NodeShape::kNone) return 0;
+  if (node.shape != NodeShape::kMesh || !node.mesh) return 1;
+  return node.mesh->triangles.size() + node.mesh->positions.size() + node.mesh->normals.size();
+}
+
+/// The size of everything below the root, counting a node once per path to it (saturating),
+/// without recursion: a node DAG can be deeper than the C++ stack and, through shared children,
+/// expand exponentially.
+uint64_t expanded_size(const SceneNode& root) {
+  constexpr uint64_t kSaturated = std::numeric_limits<uint64_t>::max();
+  std::unordered_map<const SceneNode*, uint64_t> totals;
+  std::set<const SceneNode*> in_progress;
+  std::vector<std::pair<const SceneNode*, bool>> stack{{&root, false}};
+  while (!stack.empty()) {
+    const auto [node, children_done] = stack.back();
+    stack.pop_back();
+    if (!children_done) {
+      if (totals.count(node)) continue;
+      if (!in_progress.insert(node).second)
+        throw SceneError(node->where, "node '" + node->name + "' is its own ancestor: the scene graph has a cycle");
+      stack.push_back({node, true});
+      for (const auto& child : node->children)
+        if (!totals.count(child.get())) stack.push_back({child.get(), false});
+      continue;
+    }
+    uint64_t total = own_size(*node);
+    for (const auto& child : node->children) {
+      const uint64_t add = totals.at(child.get());
+      total = add > kSaturated - total ? kSaturated : total + add;
+    }
+    in_progress.erase(node);
+    totals[node] = total;
+  }
+  return totals.at(&root);
+}
+
 class Flattener {
  public:
   Flattener(World& world, std::vector<std::string>* warnings) : world_(world), warnings_(warnings) {}
 
-  void visit(const SceneNode& node, const Transform& world_from_parent) {
-    const Transform world_from_node = world_from_parent * node.parent_from_node;
-    if (node.shape != NodeShape::kNone) emit(node, world_from_node);
-    for (const auto& child : node.children) visit(*child, world_from_node);
+  /// Emits the DAG below `root` in pre-order, children in order, with an explicit stack.
+  void visit(const SceneNode& root) {
+    struct Pending {
+      const SceneNode* node;
+      Transform world_from_parent;
+    };
+    std::vector<Pending> stack{{&root, Transform()}};
+    while (!stack.empty()) {
+      Pending next = std::move(stack.back());
+      stack.pop_back();
+      const SceneNode& node = *next.node;
+      const Transform world_from_node = next.world_from_parent * node.parent_from_node;
+      if (node.shape != NodeShape::kNone) emit(node, world_from_node);
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+        stack.push_back({child->get(), world_from_node});
+    }
   }
 
  private:
@@ -35,19 +97,29 @@ class Flattener {
     return it->second;
   }
 
-  void emit(const SceneNode& node, const Transform& world_from_node) {
-    const uint32_t material = material_index(node);
-    if (node.shape == NodeShape::kMesh) {
-      emit_mesh(*node.mesh, world_from_node, material);
-      return;
-    }
-    world_.shapes.push_back({node.shape, world_from_node * node.node_from_object, material, node.node_from_object});
+  [[noreturn]] static void overflow(const SceneNode& node) {
+    throw SceneError(node.where, "'" + node.name + "' is scaled or moved so far (its transforms composed down " +
+                                     "the scene graph) that its geometry leaves float range");
   }
 
-  void emit_mesh(const ObjMesh& mesh, const Transform& world_from_object, uint32_t material) {
+  void emit(const SceneNode& node, const Transform& world_from_node) {
+    const uint32_t material = material_index(node);
+    const Transform world_from_object = world_from_node * node.node_from_object;
+    if (!fits_float(world_from_object.matrix()) || !fits_float(world_from_object.inverse_matrix())) overflow(node);
+    if (node.shape == NodeShape::kMesh) {
+      emit_mesh(node, *node.mesh, world_from_node, material);
+      return;
+    }
+    world_.shapes.push_back({node.shape, world_from_object, material, node.node_from_object});
+  }
+
+  void emit_mesh(const SceneNode& node, const ObjMesh& mesh, const Transform& world_from_object, uint32_t material) {
     WorldMesh out;
     out.positions.reserve(mesh.positions.size());
-    for (const Point3& p : mesh.positions) out.positions.push_back(world_from_object(p));
+    for (const Point3& p : mesh.positions) {
+      out.positions.push_back(world_from_object(p));
+      if (!is_finite(out.positions.back())) overflow(node);
+    }
     out.normals.reserve(mesh.normals.size());
     for (const Normal3& n : mesh.normals) out.normals.push_back(world_from_object(n));
     out.uvs = mesh.uvs;
@@ -72,12 +144,21 @@ class Flattener {
 
 }  // namespace
 
-World flatten(const RenderJob& job, std::vector<std::string>* warnings) {
+World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t max_size) {
   World world;
   world.lights = job.lights;
   world.ambient = job.ambient;
   world.background = job.background;
-  if (job.root) Flattener(world, warnings).visit(*job.root, Transform());
+  if (!job.root) return world;
+  // Compute the expanded size first, so that a small script instancing a mesh 2^60 times
+  // fails at once instead of filling memory.
+  if (const uint64_t size = expanded_size(*job.root); size > max_size)
+    throw SceneError(job.where, "gr.render: the scene expands to " +
+                                    (size == std::numeric_limits<uint64_t>::max() ? std::string("more than 10^19")
+                                                                                  : std::to_string(size)) +
+                                    " primitives and mesh vertices once every instance is counted, more than the "
+                                    "limit of " + std::to_string(max_size));
+  Flattener(world, warnings).visit(*job.root);
   return world;
 }
 

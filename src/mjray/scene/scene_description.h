@@ -61,6 +61,9 @@ struct SceneDescription {
   std::filesystem::path script;
   std::vector<RenderJob> jobs;
   std::vector<std::string> warnings;  ///< "file:line: text", shown to the user
+  /// Every file the script read (meshes, textures, modules, files it opened), as resolved;
+  /// outputs must not overwrite them.
+  std::vector<std::filesystem::path> inputs;
 };
 
 }  // namespace mjray

@@ -1,0 +1,176 @@
+// The real mjray program against hostile outputs and limits: an image that would overwrite
+// the scene or a file it reads, a full disk, a missing folder, and the --lua-memory and
+// --scene-timeout options. Each asserts the exit code, the message and that no file changed.
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "mjray/io/image_writer.h"
+#include "support/scratch_files.h"
+#include "support/test_paths.h"
+
+namespace mjray {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string err;
+};
+
+std::string shell_quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string lit_sphere(const std::string& output, int size = 8, const std::string& prelude = "") {
+  return prelude +
+         "root = gr.node('root')\n"
+         "s = gr.nh_sphere('s', {0, 0, 0}, 1)\n"
+         "s:set_material(gr.material({0.8, 0.2, 0.2}, {0.5, 0.5, 0.5}, 20))\n"
+         "root:add_child(s)\n"
+         "gr.render(root, " + output + ", " + std::to_string(size) + ", " + std::to_string(size) +
+         ", {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, {gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n";
+}
+
+class HardeningOutput : public test::ScratchFolderTest {
+ protected:
+  /// Runs `[SHELL_PREFIX] mjray ARGS` from "/"; stderr is captured.
+  RunResult run(const std::vector<std::string>& args, const std::string& shell_prefix = "") {
+    const fs::path err = logs_ / "stderr.txt";
+    std::string command = "cd / && " + shell_prefix + shell_quoted(test::mjray_binary().string()) + " --quiet";
+    for (const auto& arg : args) command += " " + shell_quoted(arg);
+    command += " 2>" + shell_quoted(err.string()) + " >/dev/null </dev/null";
+    const int status = std::system(("sh -c " + shell_quoted(command)).c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(err)};
+  }
+
+  /// The names in the scratch folder, sorted, space-separated.
+  std::string listing() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : " ") + n;
+    return out;
+  }
+
+  std::string at(int line) const { return (dir_ / "scene.lua").string() + ":" + std::to_string(line); }
+
+  const fs::path logs_ = test::make_temp_dir("hardening-logs");
+};
+
+TEST_F(HardeningOutput, RenderingOverTheSceneFileIsRefused) {
+  const std::string text = lit_sphere("'scene.lua'");
+  const auto scene = write("scene.lua", text);
+  const RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + at(5) + ": gr.render would overwrite '" + scene.string() +
+                       "', which is the scene script itself; choose another output file\n");
+  EXPECT_EQ(test::read_file(scene), text);
+  EXPECT_EQ(listing(), "scene.lua");
+}
+
+TEST_F(HardeningOutput, RenderingOverATextureOrMeshTheSceneReadsIsRefused) {
+  Image texture(2, 2);
+  texture.at(1, 1) = Color(1, 0, 0);
+  write_image(texture, dir_ / "tex.png");
+  const std::string texture_bytes = test::read_file(dir_ / "tex.png");
+  const std::string mesh_text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  write("mesh.obj", mesh_text);
+  const auto scene = write("scene.lua", lit_sphere("'sub/../tex.png'", 8,
+                                                   "t = gr.filetexture('tex.png')\nm = gr.mesh('m', 'mesh.obj')\n"));
+  RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + at(7) + ": gr.render would overwrite '" + (dir_ / "sub/../tex.png").string() +
+                       "', which is a file the scene reads; choose another output file\n");
+  // Through --output, and through a symbolic link to the mesh.
+  fs::create_symlink(dir_ / "mesh.obj", dir_ / "link.ppm");
+  r = run({"--output", (dir_ / "link.ppm").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("gr.render would overwrite '" + (dir_ / "link.ppm").string() + "', which is a file the scene reads"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(test::read_file(dir_ / "tex.png"), texture_bytes);
+  EXPECT_EQ(test::read_file(dir_ / "mesh.obj"), mesh_text);
+  EXPECT_EQ(listing(), "link.ppm mesh.obj scene.lua tex.png");
+}
+
+TEST_F(HardeningOutput, StatisticsOverTheSceneFileAreRefused) {
+  const std::string text = lit_sphere("'out.png'");
+  const auto scene = write("scene.lua", text);
+  const RunResult r = run({"--stats-json", scene.string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() + ": --stats-json would overwrite '" + scene.string() +
+                       "', which is the scene script itself; choose another output file\n");
+  EXPECT_EQ(test::read_file(scene), text);
+  EXPECT_EQ(listing(), "scene.lua");
+}
+
+TEST_F(HardeningOutput, FullDiskKeepsThePreviousImage) {
+  // A 1 KiB file-size limit (ulimit -f counts 1024-byte blocks) stands in for a full disk:
+  // the 64 x 64 PPM (12 KiB) cannot be written.
+  const auto scene = write("scene.lua", lit_sphere("'out.ppm'", 64));
+  write("out.ppm", "the previous image");
+  const RunResult r = run({scene.string()}, "ulimit -f 1 && ");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err.rfind("mjray: error: cannot write '" + (dir_ / "out.ppm").string() + "': ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_file(dir_ / "out.ppm"), "the previous image");
+  EXPECT_EQ(listing(), "out.ppm scene.lua");  // no temporary file left
+}
+
+TEST_F(HardeningOutput, MissingOutputFolderIsAClearErrorAndWritesNothing) {
+  const auto scene = write("scene.lua", lit_sphere("'absent/out.png'"));
+  const RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: cannot write '" + (dir_ / "absent/out.png").string() + "': folder '" +
+                       (dir_ / "absent").string() + "' does not exist\n");
+  EXPECT_EQ(listing(), "scene.lua");
+}
+
+TEST_F(HardeningOutput, LuaMemoryOptionCapsTheScript) {
+  const auto scene = write("scene.lua", "local t = {}\nwhile true do t[#t + 1] = string.rep('x', 1000) .. #t end\n");
+  RunResult r = run({"--lua-memory", "32MiB", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + at(2) + ": the script needs more than 32 MiB of Lua memory (the --lua-memory limit)\n");
+  r = run({"--lua-memory", "lots", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: --lua-memory expects a size like 512MiB, 4GiB or a number of bytes, got 'lots'\n"
+                   "(run 'mjray --help' for the options)\n");
+  r = run({"--lua-memory", "1000", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("mjray: --lua-memory must be at least 1MiB (or 0 for no limit), got '1000'\n", 0), 0u) << r.err;
+  EXPECT_EQ(listing(), "scene.lua");
+}
+
+TEST_F(HardeningOutput, SceneTimeoutStopsEndlessScriptsEvenInsideALibraryCall) {
+  const auto start = std::chrono::steady_clock::now();
+  auto scene = write("scene.lua", "local n = 0\nwhile true do n = n + 1 end\n");
+  RunResult r = run({"--scene-timeout", "0.5", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + at(2) + ": the script ran longer than 0.5 s (the --scene-timeout limit)\n");
+  // A pathological pattern keeps Lua inside one C call, where no hook runs: the watchdog ends it.
+  scene = write("scene.lua", "local s = string.rep('a', 300000)\nprint(s:find('.-.-.-.-b'))\n");
+  r = run({"--scene-timeout", "0.5", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() +
+                       ": the script is still running 2 s after the 0.5 s --scene-timeout (stuck inside one library "
+                       "call); stopping\n");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
+  r = run({"--scene-timeout", "soon", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(listing(), "scene.lua");
+}
+
+}  // namespace
+}  // namespace mjray
