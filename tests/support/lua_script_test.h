@@ -11,9 +11,12 @@ namespace mjray::test {
 
 class LuaScriptTest : public ScratchFolderTest {
  protected:
-  /// Loads `script` written as dir_/scene.lua.
+  /// Loads `script` written as dir_/scene.lua. Scripts get a minute unless the options say
+  /// otherwise, so that a test never hangs on one.
   SceneDescription load(const std::string& script, const SceneLoadOptions& options = {}) {
-    return load_scene(write("scene.lua", script), options);
+    SceneLoadOptions limited = options;
+    if (limited.timeout_seconds == 0) limited.timeout_seconds = 60;
+    return load_scene(write("scene.lua", script), limited);
   }
 
   /// The message load_scene throws for `script`, or "(no error)".

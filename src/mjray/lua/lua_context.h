@@ -22,7 +22,6 @@ namespace mjray::lua {
 struct ScriptLimits {
   size_t memory_limit = 0;      ///< bytes; 0 = none
   size_t memory_used = 0;       ///< bytes the Lua state holds now
-  size_t memory_peak = 0;
   bool enforcing = false;       ///< off while the libraries are installed
   /// Nonzero while a C++ binding runs: its own Lua allocations may pass the cap, since a Lua
   /// memory error would longjmp over its C++ locals; the script's next allocation fails.
@@ -30,7 +29,6 @@ struct ScriptLimits {
   lua_State* L = nullptr;       ///< the main thread, to locate a refused allocation
   std::filesystem::path script; ///< for messages with no Lua line
   FileLocation memory_where;    ///< the Lua line of the last refused allocation
-  bool memory_refused = false;
 
   uint64_t instruction_limit = 0;  ///< 0 = none
   uint64_t instructions = 0;       ///< counted in steps of the hook interval

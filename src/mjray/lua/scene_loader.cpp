@@ -137,16 +137,12 @@ void* limited_alloc(void* ud, void* block, size_t old_size, size_t new_size) {
   }
   if (new_size > old_size && limits.memory_limit != 0 && limits.enforcing && limits.grace == 0 &&
       limits.memory_used - old_size + new_size > limits.memory_limit) {
-    limits.memory_refused = true;
     // Reading the call stack allocates nothing, and Lua keeps it consistent wherever it allocates.
     limits.memory_where = running_location(limits.L, limits.script);
     return nullptr;
   }
   void* grown = std::realloc(block, new_size);
-  if (grown != nullptr) {
-    limits.memory_used = limits.memory_used - old_size + new_size;
-    limits.memory_peak = std::max(limits.memory_peak, limits.memory_used);
-  }
+  if (grown != nullptr) limits.memory_used = limits.memory_used - old_size + new_size;
   return grown;
 }
 
