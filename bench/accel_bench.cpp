@@ -4,11 +4,12 @@
 //
 //   mjray-bench --mesh FILE.obj --accel none|grid|bvh|embree --rays primary|incoherent|shadow
 //               [--threads N] [--build-threads N] [--grid N | --grid-optimal] [--repeat K]
-//               [--max-rays N] [--ray-count N] [--seed N] [--min-ms N]
+//               [--max-rays N] [--ray-count N] [--seed N] [--min-ms N] [--closest]
 //
 // Build: K builds, median. Trace: one warm-up pass, then K timed samples, each as many passes
 // over the rays as make it last ≥ --min-ms milliseconds (default 250); the median per-pass time is
-// trace_seconds.
+// trace_seconds. --closest traces the shadow rays with intersect() instead of occluded(), to
+// see what the any-hit path gains over a closest-hit query on the same rays.
 
 #include <algorithm>
 #include <chrono>
@@ -53,6 +54,7 @@ struct Options {
   size_t ray_count = 1 << 20; ///< incoherent rays
   uint64_t seed = 1;
   double min_seconds = 0.25;  ///< shortest timed trace sample
+  bool closest = false;       ///< shadow rays as closest-hit queries (to compare with occluded)
 };
 
 /// One query: a ray and its range (shadow rays stop short of the light).
@@ -61,14 +63,14 @@ struct Query {
   float t_max;
 };
 
+constexpr const char* kUsage =
+    "usage: mjray-bench --mesh FILE.obj --accel none|grid|bvh|embree --rays primary|incoherent|shadow\n"
+    "                   [--threads N] [--build-threads N] [--grid N | --grid-optimal] [--repeat K]\n"
+    "                   [--max-rays N] [--ray-count N] [--seed N] [--min-ms N] [--closest]\n";
+
+/// Prints the problem and the usage to stderr and exits 2 (as mjray does for a bad command line).
 [[noreturn]] void usage(const std::string& problem) {
-  std::fprintf(stderr,
-               "mjray-bench: %s\n"
-               "usage: mjray-bench --mesh FILE.obj --accel none|grid|bvh|embree --rays primary|incoherent|shadow\n"
-               "                   [--threads N] [--build-threads N] [--grid N | --grid-optimal] [--repeat K]\n"
-               "                   [--max-rays N]"
-               " [--ray-count N] [--seed N] [--min-ms N]\n",
-               problem.c_str());
+  std::fprintf(stderr, "mjray-bench: %s\n%s", problem.c_str(), kUsage);
   std::exit(2);
 }
 
@@ -103,7 +105,11 @@ Options parse(int argc, char** argv) {
     else if (a == "--ray-count") o.ray_count = size_t(number());
     else if (a == "--seed") o.seed = uint64_t(number());
     else if (a == "--min-ms") o.min_seconds = double(number()) / 1000;
-    else if (a == "--help" || a == "-h") usage("help");
+    else if (a == "--closest") o.closest = true;
+    else if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
     else usage("unknown option " + a);
   }
   if (o.mesh.empty()) usage("--mesh is required");
@@ -270,7 +276,7 @@ int main(int argc, char** argv) {
       rays = shadow_rays(world, *reference, box, std::max(o.threads, 2));
     }
     rays = subset(std::move(rays), o.max_rays);
-    const bool shadow = o.rays == "shadow";
+    const bool shadow = o.rays == "shadow" && !o.closest;
 
     // Build K times; keep the last structure.
     AcceleratorOptions accel_options{o.accel, o.grid, o.build_threads};
@@ -304,12 +310,12 @@ int main(int argc, char** argv) {
     const double trace_seconds = median(traces);
 
     std::printf("{\"mesh\": \"%s\", \"triangles\": %zu, \"accel\": \"%s\", \"grid\": %d, \"threads\": %d, "
-                "\"ray_kind\": \"%s\", \"rays\": %zu, \"hits\": %zu, \"repeat\": %d, \"load_seconds\": %.6f, "
+                "\"ray_kind\": \"%s\", \"query\": \"%s\", \"rays\": %zu, \"hits\": %zu, \"repeat\": %d, \"load_seconds\": %.6f, "
                 "\"build_seconds\": %.6f, \"build_seconds_min\": %.6f, \"accel_bytes\": %zu, "
                 "\"bytes_per_triangle\": %.2f, \"trace_seconds\": %.6f, \"trace_seconds_min\": %.6f, "
                 "\"rays_per_second\": %.1f, \"passes\": %d, \"build_threads\": %d}\n",
                 json_escape(o.mesh).c_str(), world.triangles.size(), std::string(accel->name()).c_str(),
-                grid_resolution, o.threads, o.rays.c_str(), rays.size(), hits, o.repeat, load_seconds,
+                grid_resolution, o.threads, o.rays.c_str(), shadow ? "occluded" : "intersect", rays.size(), hits, o.repeat, load_seconds,
                 median(builds), *std::min_element(builds.begin(), builds.end()), accel->memory_bytes(),
                 world.triangles.empty() ? 0.0 : double(accel->memory_bytes()) / double(world.triangles.size()),
                 trace_seconds, *std::min_element(traces.begin(), traces.end()),

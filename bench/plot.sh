@@ -28,9 +28,13 @@ if [ -f "$OUT/threads.csv" ]; then
   maxj=$(sort -k2,2n "$TMP/threads.dat" | tail -1 | cut -d' ' -f2)
   printf '2 1.85\n' >"$TMP/target.dat"
   plots="x title 'ideal' dt 2 lc rgb '#888888', '$TMP/target.dat' using 1:2 with points pt 3 ps 3 lw 2 lc rgb '#cc0000' title 'target at -j 2 (1.85x)'"
+  colours=("#1f77b4" "#d62728" "#2ca02c" "#9467bd" "#ff7f0e")
+  i=0
   for s in $scenes; do
-    plots+=", '$TMP/threads.dat' using 2:(strcol(1) eq '$s' ? \$3 : 1/0) with linespoints lw 2 pt 7 title '$s (render)'"
-    plots+=", '$TMP/threads.dat' using 2:(strcol(1) eq '$s' ? \$4 : 1/0) with linespoints lw 1 dt 4 pt 6 title '$s (whole process)'"
+    c=${colours[$((i % 5))]}
+    plots+=", '$TMP/threads.dat' using 2:(strcol(1) eq '$s' ? \$3 : 1/0) with linespoints lw 2 pt 7 lc rgb '$c' title '$s (render)'"
+    plots+=", '$TMP/threads.dat' using 2:(strcol(1) eq '$s' ? \$4 : 1/0) with linespoints lw 1 dt 4 pt 6 lc rgb '$c' title '$s (whole process)'"
+    i=$((i + 1))
   done
   gnuplot <<EOF
 $TERM_PNG
@@ -96,16 +100,16 @@ if [ -f "$OUT/accel.csv" ]; then
     j=${f##*_}
     j=${j%.dat}
     nj=$((nj + 1))
-    accel_plots+="set title '-j $j'
+    accel_plots+="set title 'Rays/s relative to Embree 3 (rtcIntersect1, rtcOccluded1), -j $j; higher is better'
 plot '$f' using 2:xtic(1) title 'bvh' lc rgb '#1f77b4', '' using 3 title 'grid (-o)' lc rgb '#ff7f0e', \\
      0.8 with lines dt 2 lw 2 lc rgb '#cc0000' title 'bvh target 0.8', 1 with lines lc rgb '#444444' title 'Embree'
 "
   done
   gnuplot <<EOF
 $TERM_PNG
-set terminal pngcairo size 1100,$((320 * nj)) font 'DejaVu Sans,11' noenhanced
+set terminal pngcairo size 1200,$((400 * nj)) font 'DejaVu Sans,11' noenhanced
 set output '$DOCS/perf_accel.png'
-set multiplot layout $nj,1 title 'Rays per second relative to Embree 3 (rtcIntersect1 / rtcOccluded1); higher is better'
+set multiplot layout $nj,1
 set style data histograms
 set style histogram clustered gap 1
 set style fill solid 0.8 border -1
@@ -113,7 +117,8 @@ set boxwidth 0.9
 set yrange [0:*]
 set grid y
 set ylabel 'ratio to Embree'
-set key top right
+set key outside top center horizontal
+set rmargin 8
 set xtics rotate by -30 font ',9'
 $accel_plots
 unset multiplot

@@ -3,6 +3,8 @@
 
 The run_*.sh scripts call it; it needs only the Python standard library.
 
+  results.py idle [SECONDS]                                   wait up to SECONDS for an idle machine;
+                                                              print the idle fraction of all cores
   results.py record FILE key=value... [--stats STATS.json]   append one run to FILE (JSON lines)
   results.py accel ACCEL.jsonl OUTDIR                         accelerator tables + accel.csv
   results.py render RENDER.jsonl OUTDIR                       render tables + sweep/threads CSVs
@@ -12,6 +14,7 @@ import json
 import os
 import statistics
 import sys
+import time
 
 # Targets from the acceleration issue, used to mark rows.
 BVH_RATE_TARGET = 0.8      # BVH rays/s >= 0.8x Embree's
@@ -61,8 +64,40 @@ def record(argv):
         f.write(json.dumps(row) + "\n")
 
 
+def cpu_idle(interval=0.5):
+    """Fraction of all cores idle over `interval` seconds (from /proc/stat)."""
+    def sample():
+        with open("/proc/stat") as f:
+            fields = [int(x) for x in f.readline().split()[1:]]
+        return sum(fields), fields[3] + fields[4]  # total, idle + iowait
+    t0, i0 = sample()
+    time.sleep(interval)
+    t1, i1 = sample()
+    return (i1 - i0) / max(1, t1 - t0)
+
+
+def idle(argv):
+    """Waits up to argv[0] seconds for the machine to be at least 90 % idle; prints the idle
+    fraction last seen (the scripts record it beside each run)."""
+    deadline = time.time() + float(argv[0]) if argv else 0
+    while True:
+        fraction = cpu_idle()
+        if fraction >= 0.9 or time.time() >= deadline:
+            print(f"{fraction:.2f}")
+            return
+
+
 def mesh_name(path):
     return os.path.splitext(os.path.basename(path))[0]
+
+
+def idle_note(rows):
+    """A sentence on how idle the machine was before the runs (recorded by the scripts)."""
+    idles = sorted(r["idle"] for r in rows if "idle" in r)
+    if not idles:
+        return ""
+    return (f" Machine idle before the runs: median {100 * median(idles):.0f} %, lowest {100 * idles[0]:.0f} % "
+            "(2 cores; 50 % = one core busy with other work).")
 
 
 def fmt(x, digits=2):
@@ -128,7 +163,8 @@ def accel_tables(argv):
                        + " | ".join(bytes_cells) + " |")
     out.append("")
     out.append(f"✗ = misses its target (BVH rays/s ≥ {BVH_RATE_TARGET}× Embree, BVH build ≤ {BVH_BUILD_TARGET}× "
-               f"Embree, BVH ≤ {BVH_BYTES_TARGET:.0f} B/triangle). Medians of each run's median-of-K.")
+               f"Embree, BVH ≤ {BVH_BYTES_TARGET:.0f} B/triangle). Medians of each run's median-of-K."
+               + idle_note(rows))
     # Consistency: every accelerator must report the same number of hits for the same rays.
     problems = []
     for tris, mesh in meshes:
@@ -175,6 +211,10 @@ def render_tables(argv):
     scenes = list(dict.fromkeys(r["scene"] for r in compare))
     out.append("### Brute force vs grid (-o) vs BVH (whole-process seconds, median)")
     out.append("")
+    note = idle_note(rows)
+    if note:
+        out.append(note.strip())
+        out.append("")
     out.append("| scene | primitives | -j | none (-g 0) | grid (-o) | bvh | none / grid | grid / bvh |")
     out.append("|---|---:|---:|---:|---:|---:|---:|---:|")
     for scene in scenes:
@@ -250,7 +290,8 @@ def render_tables(argv):
         out.append("")
         out.append(f"✗ = render speed-up below the {THREADS_TARGET}× target. CPU = user + system seconds of the "
                    f"process; a CPU ratio near 1 means the {hi}-thread run does no more work than the 1-thread "
-                   "one, so its wall-clock speed-up is limited by the cores it gets, not by the code.")
+                   "one, so its wall-clock speed-up is limited by the cores it gets, not by the code."
+                   + idle_note(threads))
         out.append("")
         write(outdir, "threads.csv", csv)
     write(outdir, "render.md", out)
@@ -297,7 +338,7 @@ def povray_tables(argv):
             csv.append(f"{scene},{j},{t['mjray']:.4f},{t['povray']:.4f}")
     out.append("")
     out.append(f"Whole-process wall time and CPU time (user + system), medians of the runs; ✗ = below the "
-               f"{POVRAY_TARGET:.0f}× target.")
+               f"{POVRAY_TARGET:.0f}× target." + idle_note(rows))
     write(outdir, "povray.md", out)
     write(outdir, "povray.csv", csv)
 
@@ -313,7 +354,7 @@ def write(outdir, name, lines):
 
 
 if __name__ == "__main__":
-    commands = {"record": record, "accel": accel_tables, "render": render_tables, "povray": povray_tables}
-    if len(sys.argv) < 3 or sys.argv[1] not in commands:
+    commands = {"idle": idle, "record": record, "accel": accel_tables, "render": render_tables, "povray": povray_tables}
+    if len(sys.argv) < 2 or sys.argv[1] not in commands or (sys.argv[1] != "idle" and len(sys.argv) < 3):
         sys.exit(__doc__)
     commands[sys.argv[1]](sys.argv[2:])

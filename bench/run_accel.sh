@@ -10,7 +10,8 @@
 # Environment: BUILD (build folder, default build-bench), SHARED (default ../shared), OUT
 # (results folder, default bench/results), MESHES (paths under $SHARED/models), ACCELS
 # (default "bvh grid embree"; "none" runs brute force on MAX_RAYS_NONE rays), KINDS, THREADS,
-# REPEAT (builds and traces per run; the median is reported).
+# REPEAT (builds and traces per run; the median is reported), WAIT_IDLE (seconds to wait before
+# each run for a ≥ 90 % idle machine; default 0 = only record the idle fraction).
 set -euo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -23,6 +24,7 @@ KINDS=${KINDS:-"primary incoherent shadow"}
 THREADS=${THREADS:-"1 2"}
 REPEAT=${REPEAT:-5}
 MAX_RAYS_NONE=${MAX_RAYS_NONE:-20000}
+WAIT_IDLE=${WAIT_IDLE:-0}
 
 BENCH=$BUILD/mjray-bench
 if [ ! -x "$BENCH" ]; then
@@ -47,15 +49,18 @@ for mesh in $MESHES; do
         extra=()
         [ "$accel" = grid ] && extra=(--grid-optimal)
         [ "$accel" = none ] && extra=(--max-rays "$MAX_RAYS_NONE")
+        idle=$(python3 "$ROOT/bench/results.py" idle "$WAIT_IDLE")
         line=$("$BENCH" --mesh "$SHARED/models/$mesh" --accel "$accel" --rays "$kind" --threads "$j" \
                --repeat "$REPEAT" "${extra[@]}")
-        echo "$line" >>"$LOG"
-        python3 - "$line" <<'EOF'
+        python3 - "$line" "$idle" "$LOG" <<'EOF'
 import json, sys
 r = json.loads(sys.argv[1])
+r["idle"] = float(sys.argv[2])
+with open(sys.argv[3], "a") as f:
+    f.write(json.dumps(r) + "\n")
 print(f"{r['mesh'].split('/')[-1]:24} {r['ray_kind']:10} -j{r['threads']} {r['accel']:6} "
       f"build {r['build_seconds']:8.4f} s  {r['bytes_per_triangle']:6.1f} B/tri  "
-      f"{r['rays_per_second'] / 1e6:7.2f} Mrays/s  hits {r['hits']}")
+      f"{r['rays_per_second'] / 1e6:7.2f} Mrays/s  hits {r['hits']}  (idle before {r['idle']:.2f})")
 EOF
       done
     done

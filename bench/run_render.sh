@@ -3,7 +3,7 @@
 # and §6.3-6.5: brute force vs uniform grid (-o) vs BVH, render time vs grid size (-g sweep),
 # and time vs threads. Each configuration runs REPEAT times (median reported); every run's
 # --stats-json goes to bench/results/render.jsonl, the tables to render.md, and the sweep and
-# thread CSVs for plot.sh. Takes about 10-15 minutes on 2 busy cores.
+# thread CSVs for plot.sh. Takes about 12-15 minutes on 2 busy cores.
 #
 #   bench/run_render.sh                   # everything
 #   PARTS="threads" REPEAT=5 bench/run_render.sh      # one part (compare, sweep, threads)
@@ -16,7 +16,10 @@
 #
 # Environment: BUILD, SHARED, OUT as in run_accel.sh; REPEAT (default 3); LIMIT (seconds after
 # which a slow configuration is stopped and reported as "> LIMIT", default 60); JOBS (threads
-# for the compare and sweep parts, default 2); PARTS (default "compare sweep threads").
+# for the compare and sweep parts, default 2); PARTS (default "compare sweep threads");
+# WAIT_IDLE (seconds to wait before each run for the machine to be ≥ 90 % idle, default 0: the
+# idle fraction over the half second before each run is only recorded, as "idle");
+# SLOW_REPEAT and SLOW_LIMIT (default 1 and 300) for brute force on the Venus.
 set -uo pipefail
 
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -27,6 +30,9 @@ REPEAT=${REPEAT:-3}
 LIMIT=${LIMIT:-60}
 JOBS=${JOBS:-2}
 PARTS=${PARTS:-"compare sweep threads"}
+WAIT_IDLE=${WAIT_IDLE:-0}
+SLOW_REPEAT=${SLOW_REPEAT:-1}
+SLOW_LIMIT=${SLOW_LIMIT:-300}
 
 MJRAY=$BUILD/mjray
 if [ ! -x "$MJRAY" ]; then
@@ -64,9 +70,10 @@ fi
 run() {
   local experiment=$1 name=$2 variant=$3 threads=$4 scene=$5
   shift 5
-  local k status start end wall cpu
+  local k status start end wall cpu idle
   for ((k = 1; k <= REPEAT; k++)); do
     rm -f "$TMP/stats.json"
+    idle=$(python3 "$ROOT/bench/results.py" idle "$WAIT_IDLE")
     start=$EPOCHREALTIME
     /usr/bin/time -f '%U %S' -o "$TMP/time" timeout "$LIMIT" "$MJRAY" --quiet --outdir "$TMP" \
       --stats-json "$TMP/stats.json" -j "$threads" "$@" "$scene" >/dev/null 2>"$TMP/stderr"
@@ -76,7 +83,7 @@ run() {
     cpu=$(tail -1 "$TMP/time" | awk '{ printf "%.3f", $1 + $2 }')
     if [ "$status" = 124 ]; then
       python3 "$ROOT/bench/results.py" record "$LOG" experiment="$experiment" scene="$name" variant="$variant" \
-        threads="$threads" run="$k" timed_out=true limit="$LIMIT" options="$*"
+        threads="$threads" run="$k" timed_out=true limit="$LIMIT" idle="$idle" options="$*"
       printf '%-8s %-12s %-10s -j%s  stopped after %s s\n' "$experiment" "$name" "$variant" "$threads" "$LIMIT"
       return 1
     elif [ "$status" != 0 ]; then
@@ -85,9 +92,9 @@ run() {
       return 2
     fi
     python3 "$ROOT/bench/results.py" record "$LOG" experiment="$experiment" scene="$name" variant="$variant" \
-      threads="$threads" run="$k" wall="$wall" cpu="$cpu" options="$*" --stats "$TMP/stats.json"
-    printf '%-8s %-12s %-10s -j%s  run %d: %7.3f s wall %7.3f s CPU\n' "$experiment" "$name" "$variant" "$threads" \
-      "$k" "$wall" "$cpu"
+      threads="$threads" run="$k" wall="$wall" cpu="$cpu" idle="$idle" options="$*" --stats "$TMP/stats.json"
+    printf '%-8s %-12s %-10s -j%s  run %d: %7.3f s wall %7.3f s CPU (idle before: %s)\n' "$experiment" "$name" \
+      "$variant" "$threads" "$k" "$wall" "$cpu" "$idle"
   done
   return 0
 }
@@ -99,8 +106,10 @@ if [[ " $PARTS " == *" compare "* ]]; then
     [ "$scene" = venus ] && file=$VENUS
     run compare "$scene" bvh "$JOBS" "$file" --accel bvh
     run compare "$scene" grid-o "$JOBS" "$file" -o
-    run compare "$scene" none "$JOBS" "$file" -g 0
   done
+  run compare macho-cows none "$JOBS" "$MACHO" -g 0
+  # Brute force on the Venus takes 1-2 minutes: SLOW_REPEAT runs (default 1) with SLOW_LIMIT.
+  REPEAT=$SLOW_REPEAT LIMIT=$SLOW_LIMIT run compare venus none "$JOBS" "$VENUS" -g 0
   # mesh.lua: brute force would take hours (871k triangles × ~4.4M rays), so it is not run;
   # the grid is tried once, with the LIMIT.
   run compare mesh bvh "$JOBS" "$MESH" -s 4 --accel bvh
@@ -131,7 +140,6 @@ if [[ " $PARTS " == *" threads "* ]]; then
     run threads spheres bvh "$j" "$SHARED/bench/spheres.lua" -r 4
     run threads mesh bvh "$j" "$MESH" -s 4
     run threads glass bvh "$j" "$SHARED/bench/glass.lua" -r 8 -f 8 -s 4 -a 3
-    run threads venus bvh "$j" "$VENUS"
   done
 fi
 

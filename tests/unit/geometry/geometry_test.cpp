@@ -91,7 +91,9 @@ TEST(Geometry, SpawnedRaysNeverReHitTheirSurface) {
     Vector3 d = random_direction(rng);
     if (dot(d, si.geometric_normal) * dot(aimed.direction, si.geometric_normal) > 0) d = -d;
     const auto again = accel.intersect(spawn_ray(si, d), kInfinity);
-    if (again) EXPECT_NE(again->prim, hit->prim) << "re-hit at t=" << again->t;
+    if (again) {
+      EXPECT_NE(again->prim, hit->prim) << "re-hit at t=" << again->t;
+    }
     ++spawned;
   }
   EXPECT_GT(spawned, 5000);
