@@ -19,7 +19,9 @@ struct IntegratorSettings {
 };
 
 /// Rays cast, by kind; each thread keeps its own and they are summed at the end.
-struct RayCounters {
+/// Cache-line aligned: each worker thread updates its own on every ray, so neighbours in an
+/// array must not share a line (false sharing would serialise the threads).
+struct alignas(64) RayCounters {
   uint64_t primary = 0;
   uint64_t secondary = 0;
   uint64_t shadow = 0;
