@@ -39,7 +39,7 @@ if [ -f "$OUT/threads.csv" ]; then
   gnuplot <<EOF
 $TERM_PNG
 set output '$DOCS/perf_threads.png'
-set title 'Speed-up vs threads (bvh; median of runs; machine shared with other work)'
+set title 'Speed-up vs threads (bvh; median of runs)'
 set xlabel 'threads (-j)'
 set ylabel 'speed-up over -j 1'
 set xrange [0.9:$maxj + 0.1]

@@ -62,7 +62,7 @@ fi
   echo "# run_render.sh $(date -u +%Y-%m-%dT%H:%MZ) on $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores"
   echo "# git $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo '?'); REPEAT=$REPEAT LIMIT=$LIMIT JOBS=$JOBS PARTS=$PARTS"
   echo "# load before: $(uptime | sed 's/.*load average/load average/')"
-} | tee "$OUT/render.meta"
+} | if [ "$PARTS" = "compare sweep threads" ]; then tee "$OUT/render.meta"; else tee -a "$OUT/render.meta"; fi
 
 # run EXPERIMENT SCENE_NAME VARIANT THREADS SCENE_FILE [mjray options...]
 # Renders REPEAT times (stopping at the first run over LIMIT seconds) and records each run.
