@@ -27,7 +27,7 @@
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/accel/uniform_grid.h"
 #include "mjray/core/rng.h"
-#include "mjray/integrator/spawn_ray.h"
+#include "mjray/geometry/spawn_ray.h"
 #include "mjray/io/obj_loader.h"
 #include "mjray/render/parallel_for.h"
 #include "mjray/scene/world.h"
@@ -129,16 +129,18 @@ double median(std::vector<double> v) {
 }
 
 /// A World holding the OBJ as one mesh, one primitive per triangle, no shapes.
-World world_from_obj(ObjMesh obj) {
+World world_from_obj(TriangleMesh obj) {
   World world;
   world.materials.push_back(PhongMaterial{});
   WorldMesh mesh;
-  mesh.positions = std::move(obj.positions);
-  mesh.triangles = std::move(obj.triangles);
-  world.triangles.reserve(mesh.triangles.size());
-  for (uint32_t f = 0; f < mesh.triangles.size(); ++f) world.triangles.push_back({0, f});
+  std::vector<std::array<uint32_t, 3>> faces;
+  faces.reserve(obj.triangles.size());
+  for (const auto& t : obj.triangles)
+    faces.push_back({uint32_t(t[0].position), uint32_t(t[1].position), uint32_t(t[2].position)});
+  world.primitives.add_triangles(obj.positions, faces);
   // Normals and uvs are dropped: hits need positions only.
-  for (auto& tri : mesh.triangles)
+  mesh.corners = std::move(obj.triangles);
+  for (auto& tri : mesh.corners)
     for (auto& c : tri) c.normal = c.uv = -1;
   world.meshes.push_back(std::move(mesh));
   return world;
@@ -203,7 +205,7 @@ std::vector<Query> shadow_rays(const World& world, const Accelerator& reference,
   parallel_for(chunks, threads, [&](int c, int) {
     const size_t end = std::min(primary.size(), size_t(c + 1) * kChunk);
     for (size_t i = size_t(c) * kChunk; i < end; ++i) {
-      const auto hit = reference.intersect(primary[i].ray, primary[i].t_max);
+      const auto hit = reference.intersect(primary[i].ray, {0, primary[i].t_max});
       if (!hit) continue;
       const SurfaceInteraction si = world.interaction(primary[i].ray, *hit);
       found[i] = Query{spawn_ray_to(si, light), kShadowTMax};
@@ -232,7 +234,7 @@ size_t trace(const Accelerator& accel, const std::vector<Query>& rays, bool shad
     const size_t end = std::min(rays.size(), size_t(c + 1) * kChunk);
     size_t n = 0;
     for (size_t i = size_t(c) * kChunk; i < end; ++i)
-      n += shadow ? accel.occluded(rays[i].ray, rays[i].t_max) : accel.intersect(rays[i].ray, rays[i].t_max).has_value();
+      n += shadow ? accel.occluded(rays[i].ray, rays[i].t_max) : accel.intersect(rays[i].ray, {0, rays[i].t_max}).has_value();
     hits[size_t(c)] = n;
   });
   size_t total = 0;
@@ -258,7 +260,7 @@ int main(int argc, char** argv) {
     auto start = Clock::now();
     const World world = world_from_obj(load_obj(o.mesh));
     const double load_seconds = seconds_since(start);
-    const Bounds3 box = world.bounds();
+    const Bounds3 box = world.primitives.bounds();
 
     // Compute the rays: the same for every accelerator (shadow rays start at hits found by a
     // fixed reference structure, built untimed).
@@ -269,9 +271,9 @@ int main(int argc, char** argv) {
       rays = incoherent_rays(box, o.ray_count, o.seed);
     } else {
 #ifdef MJRAY_HAVE_EMBREE
-      const auto reference = make_accelerator(world, {"embree", 0, 0});
+      const auto reference = make_accelerator(world.primitives, {"embree", 0, 0});
 #else
-      const auto reference = make_accelerator(world, {"bvh", 0, 0});
+      const auto reference = make_accelerator(world.primitives, {"bvh", 0, 0});
 #endif
       rays = shadow_rays(world, *reference, box, std::max(o.threads, 2));
     }
@@ -285,7 +287,7 @@ int main(int argc, char** argv) {
     for (int k = 0; k < o.repeat; ++k) {
       accel.reset();
       start = Clock::now();
-      accel = make_accelerator(world, accel_options);
+      accel = make_accelerator(world.primitives, accel_options);
       builds.push_back(seconds_since(start));
     }
     int grid_resolution = 0;
@@ -314,10 +316,10 @@ int main(int argc, char** argv) {
                 "\"build_seconds\": %.6f, \"build_seconds_min\": %.6f, \"accel_bytes\": %zu, "
                 "\"bytes_per_triangle\": %.2f, \"trace_seconds\": %.6f, \"trace_seconds_min\": %.6f, "
                 "\"rays_per_second\": %.1f, \"passes\": %d, \"build_threads\": %d}\n",
-                json_escape(o.mesh).c_str(), world.triangles.size(), std::string(accel->name()).c_str(),
+                json_escape(o.mesh).c_str(), world.primitives.triangles.size(), std::string(accel->name()).c_str(),
                 grid_resolution, o.threads, o.rays.c_str(), shadow ? "occluded" : "intersect", rays.size(), hits, o.repeat, load_seconds,
                 median(builds), *std::min_element(builds.begin(), builds.end()), accel->memory_bytes(),
-                world.triangles.empty() ? 0.0 : double(accel->memory_bytes()) / double(world.triangles.size()),
+                world.primitives.triangles.empty() ? 0.0 : double(accel->memory_bytes()) / double(world.primitives.triangles.size()),
                 trace_seconds, *std::min_element(traces.begin(), traces.end()),
                 trace_seconds > 0 ? double(rays.size()) / trace_seconds : 0.0, passes, o.build_threads);
   } catch (const std::exception& e) {

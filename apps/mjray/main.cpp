@@ -84,7 +84,7 @@ JobStatistics render_job(const CommandLine& cl, const RenderJob& job, size_t job
   std::vector<std::string> warnings;
   const World world = flatten(job, &warnings);
   for (const auto& w : warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-  const auto accel = make_accelerator(world, accelerator_options(cl));
+  const auto accel = make_accelerator(world.primitives, accelerator_options(cl));
   stats.seconds_build = seconds_since(start);
   stats.primitives = world.primitive_count();
   stats.accel = std::string(accel->name());

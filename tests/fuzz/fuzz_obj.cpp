@@ -21,10 +21,10 @@ bool in_range(int32_t index, size_t count, bool optional) {
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const mjray::ObjMesh mesh = mjray::parse_obj(text, "fuzz.obj");
+    const mjray::TriangleMesh mesh = mjray::parse_obj(text, "fuzz.obj");
     // The World indexes with these corners unchecked: each must name an existing entry.
     for (const auto& triangle : mesh.triangles)
-      for (const mjray::ObjCorner& c : triangle)
+      for (const mjray::MeshCorner& c : triangle)
         if (!in_range(c.position, mesh.positions.size(), false) || !in_range(c.uv, mesh.uvs.size(), true) ||
             !in_range(c.normal, mesh.normals.size(), true))
           std::abort();

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/renderer.h"
@@ -44,7 +45,7 @@ TEST_P(CorpusAccelerators, EveryAcceleratorGivesTheBruteForceImage) {
     const World world = flatten(job);
     const PinholeCamera camera(job.camera, job.width, job.height);
     auto render_with = [&](const AcceleratorOptions& options) {
-      const auto accel = make_accelerator(world, options);
+      const auto accel = make_accelerator(world.primitives, options);
       const WhittedIntegrator integrator(world, *accel, {});
       return render_image(camera, job.width, job.height, integrator, {});
     };

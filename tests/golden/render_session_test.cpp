@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/io/image_writer.h"
 #include "mjray/render/renderer.h"
@@ -41,7 +42,7 @@ RenderJob busy_scene(int size) {
 struct Fixture {
   RenderJob job = busy_scene(64);
   World world = flatten(job);
-  std::unique_ptr<Accelerator> accel = make_accelerator(world, {});
+  std::unique_ptr<Accelerator> accel = make_accelerator(world.primitives, {});
   WhittedIntegrator integrator{world, *accel, {4, 4, 2}};
   PinholeCamera camera{job.camera, job.width, job.height};
 };
@@ -116,7 +117,7 @@ TEST(GoldenRender, StatisticsCountWhatTheSceneImplies) {
   job.camera = {{0, 5, 0}, {0, -1, 0}, {0, 0, -1}, 60};
   job.lights = {PointLight{{0, 10, 0}, {1, 1, 1}, {1, 0, 0}}};
   const World world = flatten(job);
-  const auto accel = make_accelerator(world, {});
+  const auto accel = make_accelerator(world.primitives, {});
   const WhittedIntegrator integrator(world, *accel, {});
   RenderStats stats;
   render_image(PinholeCamera(job.camera, 40, 30), 40, 30, integrator, {}, &stats);

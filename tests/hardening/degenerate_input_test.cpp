@@ -33,7 +33,7 @@ int non_finite_pixels(const SceneDescription& scene, int max_depth = 8) {
     for (const char* kind : {"bvh", "grid", "none"}) {
       AcceleratorOptions accel_options;
       accel_options.kind = kind;
-      const auto accel = make_accelerator(world, accel_options);
+      const auto accel = make_accelerator(world.primitives, accel_options);
       const WhittedIntegrator integrator(world, *accel, {max_depth, max_depth, 2});
       RenderSettings settings;
       settings.threads = 1;
@@ -118,7 +118,7 @@ TEST_F(HardeningDegenerate, HugeAndTinyCameraVectorsWorkLikeUnitOnes) {
   EXPECT_EQ(non_finite_pixels(huge), 0);
   const auto image_of = [](const SceneDescription& s) {
     const World world = flatten(s.jobs[0]);
-    const auto accel = make_accelerator(world, {});
+    const auto accel = make_accelerator(world.primitives, {});
     const WhittedIntegrator integrator(world, *accel, {});
     RenderSettings settings;
     settings.threads = 1;
@@ -178,7 +178,7 @@ TEST_F(HardeningDegenerate, DeepestReflectionAndRefractionDepthsDoNotOverflowThe
       "root:add_child(slab)\n"
       "gr.render(root, 'out.png', 2, 2, {0,0,1}, {0,0,-1}, {0,1,0}, 1, {0.1,0.1,0.1}, {gr.light({0,0,1}, {1,1,1}, {1,0,0})})\n");
   const World world = flatten(scene.jobs[0]);
-  const auto accel = make_accelerator(world, {});
+  const auto accel = make_accelerator(world.primitives, {});
   const WhittedIntegrator integrator(world, *accel, {1000, 1000, 1});
   RenderSettings settings;
   settings.threads = 2;

@@ -167,7 +167,7 @@ TEST_F(HardeningLimits, TableMeshWithAHugeDeclaredFaceReadsOnlyWhatIsThere) {
 TEST_F(HardeningLimits, ObjFaceWithThousandsOfCornersIsBoundedByItsText) {
   std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
   for (int i = 0; i < 5000; ++i) text += " 1 2 3";
-  const ObjMesh mesh = parse_obj(text, "many.obj");
+  const TriangleMesh mesh = parse_obj(text, "many.obj");
   EXPECT_EQ(mesh.triangles.size(), 14998u);
   EXPECT_EQ(mesh.polygon_count, 1u);
   // A face naming an index far beyond what the file declares is an error, not an allocation.

@@ -47,7 +47,7 @@ std::string text(const Point3& p) {
   return buffer;
 }
 
-std::string triangles_of(const ObjMesh& mesh) {
+std::string triangles_of(const TriangleMesh& mesh) {
   std::string out;
   for (const auto& t : mesh.triangles) {
     if (!out.empty()) out += ' ';
@@ -84,7 +84,7 @@ TEST_F(LuaScene, NodeIsAnEmptyGroupWithIdentityTransform) {
   ASSERT_EQ(scene.jobs.size(), 1u);
   const SceneNode& root = *scene.jobs[0].root;
   EXPECT_EQ(root.name, "root");
-  EXPECT_EQ(root.shape, NodeShape::kNone);
+  EXPECT_FALSE(root.shape || root.mesh);
   EXPECT_TRUE(root.parent_from_node.is_identity());
   EXPECT_TRUE(root.children.empty());
   EXPECT_EQ(root.material, nullptr);
@@ -98,10 +98,10 @@ TEST_F(LuaScene, JointIsAPlainGroup) {
       render_call());
   const SceneNode& root = *scene.jobs[0].root;
   EXPECT_EQ(root.name, "elbow");
-  EXPECT_EQ(root.shape, NodeShape::kNone);
+  EXPECT_FALSE(root.shape || root.mesh);
   EXPECT_TRUE(root.parent_from_node.is_identity());
   ASSERT_EQ(root.children.size(), 1u);
-  EXPECT_EQ(root.children[0]->shape, NodeShape::kSphere);
+  EXPECT_TRUE(root.children[0]->shape && std::holds_alternative<UnitSphere>(*root.children[0]->shape));
 }
 
 TEST_F(LuaScene, SphereAndCubeAreUnitPrimitives) {
@@ -113,10 +113,10 @@ TEST_F(LuaScene, SphereAndCubeAreUnitPrimitives) {
   const auto& children = scene.jobs[0].root->children;
   ASSERT_EQ(children.size(), 2u);
   EXPECT_EQ(children[0]->name, "ball");
-  EXPECT_EQ(children[0]->shape, NodeShape::kSphere);
+  EXPECT_TRUE(children[0]->shape && std::holds_alternative<UnitSphere>(*children[0]->shape));
   EXPECT_TRUE(children[0]->node_from_object.is_identity());
   EXPECT_EQ(children[1]->name, "box");
-  EXPECT_EQ(children[1]->shape, NodeShape::kCube);
+  EXPECT_TRUE(children[1]->shape && std::holds_alternative<UnitCube>(*children[1]->shape));
   EXPECT_TRUE(children[1]->node_from_object.is_identity());
   EXPECT_EQ(children[1]->where.line, 3);
 }
@@ -124,7 +124,7 @@ TEST_F(LuaScene, SphereAndCubeAreUnitPrimitives) {
 TEST_F(LuaScene, NhSpherePlacesTheUnitSphereByCentreAndRadius) {
   const auto scene = load("root = gr.nh_sphere('s', {1, 2, 3}, 2)\n" + render_call());
   const SceneNode& s = *scene.jobs[0].root;
-  EXPECT_EQ(s.shape, NodeShape::kSphere);
+  EXPECT_TRUE(s.shape && std::holds_alternative<UnitSphere>(*s.shape));
   EXPECT_TRUE(s.parent_from_node.is_identity());
   EXPECT_EQ(text(s.node_from_object.matrix()), "[2 0 0 1; 0 2 0 2; 0 0 2 3; 0 0 0 1]");
   EXPECT_EQ(text(s.node_from_object.inverse_matrix()), "[0.5 0 0 -0.5; 0 0.5 0 -1; 0 0 0.5 -1.5; 0 0 0 1]");
@@ -133,7 +133,7 @@ TEST_F(LuaScene, NhSpherePlacesTheUnitSphereByCentreAndRadius) {
 TEST_F(LuaScene, NhBoxSpansCornerToCornerPlusSize) {
   const auto scene = load("root = gr.nh_box('b', {-1, 0, 2}, 4)\n" + render_call());
   const SceneNode& b = *scene.jobs[0].root;
-  EXPECT_EQ(b.shape, NodeShape::kCube);
+  EXPECT_TRUE(b.shape && std::holds_alternative<UnitCube>(*b.shape));
   EXPECT_EQ(text(b.node_from_object(Point3(0, 0, 0))), "(-1 0 2)");
   EXPECT_EQ(text(b.node_from_object(Point3(1, 1, 1))), "(3 4 6)");
 }
@@ -144,7 +144,7 @@ TEST_F(LuaScene, TableMeshFanTriangulatesZeroBasedPolygons) {
       "                {{0, 1, 2, 3, 4}, {4, 3, 2}})\n" +
       render_call());
   const SceneNode& m = *scene.jobs[0].root;
-  EXPECT_EQ(m.shape, NodeShape::kMesh);
+  EXPECT_TRUE(m.mesh && !m.shape);
   ASSERT_NE(m.mesh, nullptr);
   ASSERT_EQ(m.mesh->positions.size(), 5u);
   EXPECT_EQ(text(m.mesh->positions[2]), "(3 1 0)");
@@ -163,7 +163,7 @@ TEST_F(LuaScene, FileMeshIsReadFromTheScriptsFolderAndSharedByName) {
   const auto& children = scene.jobs[0].root->children;
   ASSERT_EQ(children.size(), 2u);
   ASSERT_NE(children[0]->mesh, nullptr);
-  EXPECT_EQ(children[0]->shape, NodeShape::kMesh);
+  EXPECT_TRUE(children[0]->mesh && !children[0]->shape);
   EXPECT_EQ(triangles_of(*children[0]->mesh), "0,1,2 0,2,3");
   EXPECT_EQ(text(children[0]->mesh->positions[3]), "(0 0 5)");
   EXPECT_EQ(children[0]->mesh, children[1]->mesh);  // loaded once
@@ -334,10 +334,10 @@ TEST_F(LuaScene, GeometryMayHaveChildrenAndNoMaterial) {
       "root:add_child(gr.cube('hat'))\n" +
       render_call());
   const SceneNode& root = *scene.jobs[0].root;
-  EXPECT_EQ(root.shape, NodeShape::kSphere);
+  EXPECT_TRUE(root.shape && std::holds_alternative<UnitSphere>(*root.shape));
   EXPECT_EQ(root.material, nullptr);
   ASSERT_EQ(root.children.size(), 1u);
-  EXPECT_EQ(root.children[0]->shape, NodeShape::kCube);
+  EXPECT_TRUE(root.children[0]->shape && std::holds_alternative<UnitCube>(*root.children[0]->shape));
 }
 
 // --- transform order ---------------------------------------------------------------------

@@ -6,9 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/brute_force.h"
 #include "mjray/core/rng.h"
-#include "mjray/integrator/sampling.h"
+#include "mjray/core/sampling.h"
 #include "mjray/render/renderer.h"
 #include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
@@ -85,7 +86,7 @@ struct Penumbra {
 };
 
 Color shade_floor(const World& world, float px, int samples) {
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, {8, 8, samples});
   RandomStream random(7, uint64_t(px * 1000 + 5000), 0);
   RayCounters counters;
@@ -143,7 +144,7 @@ double mean_error(const Image& a, const Image& b) {
 TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
   const RenderJob job = edge_scene();
   const World world = flatten(job);
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, {});
   const PinholeCamera camera(job.camera, job.width, job.height);
   RenderSettings reference_settings;
@@ -167,7 +168,7 @@ TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
 TEST(StatAntialiasing, ImageIsIdenticalAcrossThreadCounts) {
   const RenderJob job = edge_scene();
   const World world = flatten(job);
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, {});
   const PinholeCamera camera(job.camera, job.width, job.height);
   RenderSettings settings;

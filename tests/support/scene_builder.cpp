@@ -5,8 +5,8 @@
 
 namespace mjray::test {
 
-ObjMesh uv_sphere(int rings, int segments) {
-  ObjMesh m;
+TriangleMesh uv_sphere(int rings, int segments) {
+  TriangleMesh m;
   const float pi = std::numbers::pi_v<float>;
   m.positions.push_back({0, 1, 0});
   for (int r = 1; r < rings; ++r) {
@@ -19,7 +19,7 @@ ObjMesh uv_sphere(int rings, int segments) {
   m.positions.push_back({0, -1, 0});
   const int bottom = int(m.positions.size()) - 1;
   auto ring = [&](int r, int s) { return 1 + (r - 1) * segments + (s % segments); };
-  auto tri = [&](int a, int b, int c) { m.triangles.push_back({ObjCorner{a}, ObjCorner{b}, ObjCorner{c}}); };
+  auto tri = [&](int a, int b, int c) { m.triangles.push_back({MeshCorner{a}, MeshCorner{b}, MeshCorner{c}}); };
   for (int s = 0; s < segments; ++s) tri(0, ring(1, s + 1), ring(1, s));
   for (int r = 1; r < rings - 1; ++r)
     for (int s = 0; s < segments; ++s) {

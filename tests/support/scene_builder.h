@@ -19,7 +19,7 @@ inline std::shared_ptr<SceneNode> group(std::vector<std::shared_ptr<const SceneN
 inline std::shared_ptr<SceneNode> sphere(Point3 centre, float radius, Material material = default_material()) {
   auto node = std::make_shared<SceneNode>();
   node->name = "sphere";
-  node->shape = NodeShape::kSphere;
+  node->shape = UnitSphere{};
   node->node_from_object = Transform::translate({centre.x, centre.y, centre.z}) * Transform::scale(radius, radius, radius);
   node->material = std::make_shared<Material>(material);
   return node;
@@ -29,32 +29,31 @@ inline std::shared_ptr<SceneNode> sphere(Point3 centre, float radius, Material m
 inline std::shared_ptr<SceneNode> box(Point3 lo, Point3 hi, Material material = default_material()) {
   auto node = std::make_shared<SceneNode>();
   node->name = "box";
-  node->shape = NodeShape::kCube;
+  node->shape = UnitCube{};
   node->node_from_object = Transform::translate({lo.x, lo.y, lo.z}) * Transform::scale(hi.x - lo.x, hi.y - lo.y, hi.z - lo.z);
   node->material = std::make_shared<Material>(material);
   return node;
 }
 
-inline std::shared_ptr<SceneNode> mesh(ObjMesh data, Material material = default_material(), Transform parent_from_node = {}) {
+inline std::shared_ptr<SceneNode> mesh(TriangleMesh data, Material material = default_material(), Transform parent_from_node = {}) {
   auto node = std::make_shared<SceneNode>();
   node->name = "mesh";
-  node->shape = NodeShape::kMesh;
-  node->mesh = std::make_shared<ObjMesh>(std::move(data));
+  node->mesh = std::make_shared<TriangleMesh>(std::move(data));
   node->material = std::make_shared<Material>(material);
   node->parent_from_node = parent_from_node;
   return node;
 }
 
 /// The square [-s, s]² in the plane y = 0 as two triangles, normal +y.
-inline ObjMesh floor_quad(float s) {
-  ObjMesh m;
+inline TriangleMesh floor_quad(float s) {
+  TriangleMesh m;
   m.positions = {{-s, 0, -s}, {s, 0, -s}, {s, 0, s}, {-s, 0, s}};
-  m.triangles = {{ObjCorner{0}, ObjCorner{3}, ObjCorner{2}}, {ObjCorner{0}, ObjCorner{2}, ObjCorner{1}}};
+  m.triangles = {{MeshCorner{0}, MeshCorner{3}, MeshCorner{2}}, {MeshCorner{0}, MeshCorner{2}, MeshCorner{1}}};
   m.polygon_count = 1;
   return m;
 }
 
 /// A closed, welded UV sphere of radius 1 (rings × segments).
-ObjMesh uv_sphere(int rings, int segments);
+TriangleMesh uv_sphere(int rings, int segments);
 
 }  // namespace mjray::test

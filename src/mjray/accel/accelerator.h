@@ -11,13 +11,13 @@
 
 namespace mjray {
 
-/// A spatial index over a World's primitives. Implementations: none (brute force), grid,
-/// bvh, embree. All are thread-safe for queries and never allocate or throw on the ray path.
+/// A spatial index over a PrimitiveSet. Implementations: none (brute force), grid, bvh,
+/// embree. All are thread-safe for queries and never allocate or throw on the ray path.
 class Accelerator {
  public:
   virtual ~Accelerator() = default;
-  /// The nearest hit with t in (0, t_max), or nothing.
-  virtual std::optional<Hit> intersect(const Ray& ray, float t_max) const = 0;
+  /// The nearest hit with t in the open range `t_range`, or nothing.
+  virtual std::optional<Hit> intersect(const Ray& ray, Interval t_range) const = 0;
   /// Whether anything is hit with t in (0, t_max) (shadow rays; any hit will do).
   virtual bool occluded(const Ray& ray, float t_max) const = 0;
   /// Bounds of all primitives.

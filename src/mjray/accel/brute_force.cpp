@@ -2,12 +2,12 @@
 
 namespace mjray {
 
-std::optional<Hit> BruteForce::intersect(const Ray& ray, float t_max) const {
+std::optional<Hit> BruteForce::intersect(const Ray& ray, Interval t_range) const {
   std::optional<Hit> nearest;
-  const uint32_t n = world_.primitive_count();
+  const uint32_t n = prims_.size();
   for (uint32_t prim = 0; prim < n; ++prim) {
-    if (auto hit = world_.intersect_primitive(prim, ray, t_max)) {
-      t_max = hit->t;
+    if (auto hit = prims_.intersect(prim, ray, t_range)) {
+      t_range.max = hit->t;
       nearest = hit;
     }
   }
@@ -15,9 +15,9 @@ std::optional<Hit> BruteForce::intersect(const Ray& ray, float t_max) const {
 }
 
 bool BruteForce::occluded(const Ray& ray, float t_max) const {
-  const uint32_t n = world_.primitive_count();
+  const uint32_t n = prims_.size();
   for (uint32_t prim = 0; prim < n; ++prim)
-    if (world_.intersect_primitive(prim, ray, t_max)) return true;
+    if (prims_.intersect(prim, ray, {0, t_max})) return true;
   return false;
 }
 

@@ -2,22 +2,22 @@
 /// The oracle: every ray tests every primitive.
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
 
 /// Tests every primitive in order; kept as the reference the other accelerators must match.
 class BruteForce final : public Accelerator {
  public:
-  explicit BruteForce(const World& world) : world_(world), bounds_(world.bounds()) {}
-  std::optional<Hit> intersect(const Ray& ray, float t_max) const override;
+  explicit BruteForce(const PrimitiveSet& prims) : prims_(prims), bounds_(prims.bounds()) {}
+  std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "none"; }
   size_t memory_bytes() const override { return 0; }
 
  private:
-  const World& world_;
+  const PrimitiveSet& prims_;
   Bounds3 bounds_;
 };
 

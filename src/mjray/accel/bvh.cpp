@@ -35,8 +35,8 @@ constexpr float kGamma3 = 3 * std::numeric_limits<float>::epsilon() * 0.5f /
                           (1 - 3 * std::numeric_limits<float>::epsilon() * 0.5f);
 constexpr float kFarScale = 1 + 2 * kGamma3;
 
-bool is_valid_ray(const Ray& ray, float t_max) {
-  return is_finite(ray.origin) && is_finite(ray.direction) && t_max > 0;
+bool is_valid_ray(const Ray& ray, Interval t_range) {
+  return is_finite(ray.origin) && is_finite(ray.direction) && t_range.max > t_range.min;
 }
 
 /// A pending child: a node (count 0) or a leaf, and where the ray enters its box.
@@ -50,7 +50,7 @@ struct StackEntry {
 struct TraversalView {
   const BvhWideNode* nodes;
   const LeafPrimitive* leaves;
-  const World* world;
+  const PrimitiveSet* prims;
   uint32_t triangle_count;
 };
 
@@ -81,22 +81,22 @@ bool cpu_has_avx() {
 
 }  // namespace
 
-Bvh::Bvh(const World& world, int threads, BvhSimd simd)
-    : world_(world),
-      triangle_count_(uint32_t(world.triangles.size())),
+Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
+    : prims_(prims),
+      triangle_count_(uint32_t(prims.triangles.size())),
       use_avx_(simd == BvhSimd::kBest && cpu_has_avx()) {
   // Compute primitive bounds, build the binary tree, widen it, then copy the triangles
   // into leaf order.
-  std::vector<Bounds3> prim_bounds(world.primitive_count());
-  for (uint32_t prim = 0; prim < prim_bounds.size(); ++prim) prim_bounds[prim] = world.primitive_bounds(prim);
+  std::vector<Bounds3> prim_bounds(prims.size());
+  for (uint32_t prim = 0; prim < prim_bounds.size(); ++prim) prim_bounds[prim] = prims.primitive_bounds(prim);
   const BvhBuildResult built = build_bvh(prim_bounds, {.threads = threads});
   nodes_ = collapse_to_wide(built.nodes);
   leaf_prims_.resize(built.order.size());
   for (size_t i = 0; i < built.order.size(); ++i) {
     LeafPrimitive& leaf = leaf_prims_[i];
     leaf.prim = built.order[i];
-    if (world.is_triangle(leaf.prim)) {
-      const auto v = world.triangle_vertices(leaf.prim);
+    if (prims.is_triangle(leaf.prim)) {
+      const auto v = prims.triangle_vertices(leaf.prim);
       leaf.p0 = std::bit_cast<std::array<float, 3>>(v[0]);
       leaf.p1 = std::bit_cast<std::array<float, 3>>(v[1]);
       leaf.p2 = std::bit_cast<std::array<float, 3>>(v[2]);
@@ -115,21 +115,21 @@ size_t Bvh::memory_bytes() const {
 }
 
 template <bool kAnyHit>
-bool Bvh::trace(const Ray& ray, float t_max, Hit* hit) const {
-  if (nodes_.empty() || !is_valid_ray(ray, t_max)) return false;
-  const TraversalView view{nodes_.data(), leaf_prims_.data(), &world_, triangle_count_};
+bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit) const {
+  if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
+  const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_};
 #if MJRAY_BVH_HAS_AVX
-  if (use_avx_) return avx::traverse<kAnyHit>(view, ray, t_max, hit);
+  if (use_avx_) return avx::traverse<kAnyHit>(view, ray, t_range, hit);
 #endif
-  return baseline::traverse<kAnyHit>(view, ray, t_max, hit);
+  return baseline::traverse<kAnyHit>(view, ray, t_range, hit);
 }
 
-std::optional<Hit> Bvh::intersect(const Ray& ray, float t_max) const {
+std::optional<Hit> Bvh::intersect(const Ray& ray, Interval t_range) const {
   Hit hit{};
-  if (!trace<false>(ray, t_max, &hit)) return std::nullopt;
+  if (!trace<false>(ray, t_range, &hit)) return std::nullopt;
   return hit;
 }
 
-bool Bvh::occluded(const Ray& ray, float t_max) const { return trace<true>(ray, t_max, nullptr); }
+bool Bvh::occluded(const Ray& ray, float t_max) const { return trace<true>(ray, {0, t_max}, nullptr); }
 
 }  // namespace mjray

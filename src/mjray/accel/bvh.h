@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
 
@@ -29,7 +29,7 @@ struct alignas(64) BvhWideNode {
 /// (so leaf tests read contiguous memory), or just the id of a shape.
 struct LeafPrimitive {
   std::array<float, 3> p0, p1, p2;  ///< triangle corners; unused for shapes
-  uint32_t prim;                    ///< primitive id in the World
+  uint32_t prim;                    ///< primitive id in the PrimitiveSet
 };
 static_assert(sizeof(LeafPrimitive) == 40);
 
@@ -39,14 +39,14 @@ enum class BvhSimd {
   kBaseline,  ///< what the build targets (4-wide SSE2 on x86-64); for tests and comparisons
 };
 
-/// Binned-SAH BVH over all of a World's primitives (triangles and shapes). Primitives whose
-/// bounds are not finite are left out: the intersection tests never hit them.
+/// Binned-SAH BVH over all of a PrimitiveSet's primitives (triangles and shapes). Primitives
+/// whose bounds are not finite are left out: the intersection tests never hit them.
 class Bvh final : public Accelerator {
  public:
-  /// Builds over `world` (which must outlive the Bvh) with `threads` threads (0 = all cores).
-  Bvh(const World& world, int threads, BvhSimd simd = BvhSimd::kBest);
+  /// Builds over `prims` (which must outlive the Bvh) with `threads` threads (0 = all cores).
+  Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd = BvhSimd::kBest);
 
-  std::optional<Hit> intersect(const Ray& ray, float t_max) const override;
+  std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "bvh"; }
@@ -61,9 +61,9 @@ class Bvh final : public Accelerator {
 
  private:
   template <bool kAnyHit>
-  bool trace(const Ray& ray, float t_max, Hit* hit) const;
+  bool trace(const Ray& ray, Interval t_range, Hit* hit) const;
 
-  const World& world_;
+  const PrimitiveSet& prims_;
   uint32_t triangle_count_ = 0;
   bool use_avx_ = false;
   std::vector<BvhWideNode> nodes_;

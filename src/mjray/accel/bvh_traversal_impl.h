@@ -36,12 +36,12 @@ struct BoxRay {
   }
 };
 
-// Slab test of a node's children against t in [0, t_max]: a bit per child hit, and each
+// Slab test of a node's children against t in [t_min, t_max]: a bit per child hit, and each
 // child's entry distance. A slab distance is NaN only for a zero direction component with
 // the origin on the slab plane (0·∞); the reductions keep their other operand then (as
 // max/min instructions do for NaN in the first operand), so such a slab does not cull: a
 // ray lying in a box's face may still hit what lies on it.
-inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_max,
+inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_min, float t_max,
                              std::array<float, kBvhWidth>& t_enter) {
   const auto& b = node.bounds;
   unsigned mask = 0;
@@ -51,7 +51,7 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
     return _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[row].data()), r.origin[a]), r.inv_dir[a]);
   };
   const __m256 t_near = _mm256_max_ps(
-      slab(r.near_row[0], 0), _mm256_max_ps(slab(r.near_row[1], 1), _mm256_max_ps(slab(r.near_row[2], 2), _mm256_setzero_ps())));
+      slab(r.near_row[0], 0), _mm256_max_ps(slab(r.near_row[1], 1), _mm256_max_ps(slab(r.near_row[2], 2), _mm256_set1_ps(t_min))));
   const __m256 t_far = _mm256_min_ps(
       slab(r.far_row[0], 0), _mm256_min_ps(slab(r.far_row[1], 1), _mm256_min_ps(slab(r.far_row[2], 2), _mm256_set1_ps(t_max))));
   _mm256_storeu_ps(t_enter.data(), t_near);
@@ -62,7 +62,7 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
       return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&b[row][g]), r.origin[a]), r.inv_dir[a]);
     };
     const __m128 t_near = _mm_max_ps(
-        slab(r.near_row[0], 0), _mm_max_ps(slab(r.near_row[1], 1), _mm_max_ps(slab(r.near_row[2], 2), _mm_setzero_ps())));
+        slab(r.near_row[0], 0), _mm_max_ps(slab(r.near_row[1], 1), _mm_max_ps(slab(r.near_row[2], 2), _mm_set1_ps(t_min))));
     const __m128 t_far = _mm_min_ps(
         slab(r.far_row[0], 0), _mm_min_ps(slab(r.far_row[1], 1), _mm_min_ps(slab(r.far_row[2], 2), _mm_set1_ps(t_max))));
     _mm_storeu_ps(&t_enter[g], t_near);
@@ -70,7 +70,7 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
   }
 #else
   for (size_t i = 0; i < kBvhWidth; ++i) {
-    float t_near = 0, t_far = t_max;
+    float t_near = t_min, t_far = t_max;
     for (int a = 0; a < 3; ++a) {
       const float t0 = (b[r.near_row[a]][i] - r.origin[a][0]) * r.inv_dir[a][0];
       const float t1 = (b[r.far_row[a]][i] - r.origin[a][0]) * r.inv_dir[a][0];
@@ -84,11 +84,13 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
   return mask;
 }
 
-/// Closest hit (kAnyHit false, written to *hit) or any hit for t in (0, t_max); returns
+/// Closest hit (kAnyHit false, written to *hit) or any hit for t in `t_range`; returns
 /// whether there was one. Children are visited nearest entry first, and popped entries the
 /// ray cannot reach before its current nearest hit are skipped.
 template <bool kAnyHit>
-bool traverse(const TraversalView& bvh, const Ray& ray, float t_max, Hit* hit) {
+bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
+  const float t_min = t_range.min;
+  float t_max = t_range.max;
   const BoxRay box_ray(ray);
   const WatertightRay tri_ray(ray);
   bool found = false;
@@ -99,7 +101,7 @@ bool traverse(const TraversalView& bvh, const Ray& ray, float t_max, Hit* hit) {
     if (current.count == 0) {
       const BvhWideNode& node = bvh.nodes[current.child];
       std::array<float, kBvhWidth> t_enter;
-      unsigned mask = hit_children(node, box_ray, t_max, t_enter);
+      unsigned mask = hit_children(node, box_ray, t_min, t_max, t_enter);
       if (mask != 0) {
         const auto entry = [&](int i) {
           return StackEntry{node.child[size_t(i)], node.count[size_t(i)], t_enter[size_t(i)]};
@@ -122,13 +124,13 @@ bool traverse(const TraversalView& bvh, const Ray& ray, float t_max, Hit* hit) {
       for (uint32_t i = current.child, end = current.child + current.count; i < end; ++i) {
         const LeafPrimitive& leaf = bvh.leaves[i];
         if (leaf.prim < bvh.triangle_count) {
-          const auto h = intersect_triangle(tri_ray, t_max, leaf.p0, leaf.p1, leaf.p2);
+          const auto h = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
           if (!h) continue;
           if constexpr (kAnyHit) return true;
           t_max = h->t;
           *hit = {h->t, leaf.prim, h->b1, h->b2};
         } else {
-          const auto h = bvh.world->intersect_primitive(leaf.prim, ray, t_max);
+          const auto h = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
           if (!h) continue;
           if constexpr (kAnyHit) return true;
           t_max = h->t;

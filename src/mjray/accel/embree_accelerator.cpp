@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <string>
 #include <vector>
@@ -36,11 +37,17 @@ std::string error_text(RTCError code) {
   }
 }
 
-// The shapes' user geometry: bounds and hits come from the World itself.
+// The shapes' user geometry: bounds and hits come from the PrimitiveSet itself.
 void shape_bounds(const RTCBoundsFunctionArguments* args) {
-  const World& world = *static_cast<const World*>(args->geometryUserPtr);
-  const Bounds3 b = world.primitive_bounds(uint32_t(world.triangles.size()) + args->primID);
+  const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
+  const Bounds3 b = prims.primitive_bounds(uint32_t(prims.triangles.size()) + args->primID);
   *args->bounds_o = {b.lo.x, b.lo.y, b.lo.z, 0, b.hi.x, b.hi.y, b.hi.z, 0};
+}
+
+// The range a callback's ray asks for (kTNear stands for mjray's open 0).
+Interval range_of(RTCRayN* ray, unsigned n, unsigned i) {
+  const float t_near = RTCRayN_tnear(ray, n, i);
+  return {t_near <= kTNear ? 0 : t_near, RTCRayN_tfar(ray, n, i)};
 }
 
 Ray ray_of(RTCRayN* ray, unsigned n, unsigned i) {
@@ -49,13 +56,13 @@ Ray ray_of(RTCRayN* ray, unsigned n, unsigned i) {
 }
 
 void shape_intersect(const RTCIntersectFunctionNArguments* args) {
-  const World& world = *static_cast<const World*>(args->geometryUserPtr);
-  const uint32_t prim = uint32_t(world.triangles.size()) + args->primID;
+  const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
+  const uint32_t prim = uint32_t(prims.triangles.size()) + args->primID;
   RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
   for (unsigned i = 0; i < args->N; ++i) {
     if (!args->valid[i]) continue;
-    const auto hit = world.intersect_primitive(prim, ray_of(rays, args->N, i), RTCRayN_tfar(rays, args->N, i));
+    const auto hit = prims.intersect_shape(prim, ray_of(rays, args->N, i), range_of(rays, args->N, i));
     if (!hit) continue;
     RTCRayN_tfar(rays, args->N, i) = hit->t;
     RTCHitN_u(hits, args->N, i) = 0;
@@ -70,16 +77,16 @@ void shape_intersect(const RTCIntersectFunctionNArguments* args) {
 }
 
 void shape_occluded(const RTCOccludedFunctionNArguments* args) {
-  const World& world = *static_cast<const World*>(args->geometryUserPtr);
-  const uint32_t prim = uint32_t(world.triangles.size()) + args->primID;
+  const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
+  const uint32_t prim = uint32_t(prims.triangles.size()) + args->primID;
   for (unsigned i = 0; i < args->N; ++i) {
     if (!args->valid[i]) continue;
-    if (world.intersect_primitive(prim, ray_of(args->ray, args->N, i), RTCRayN_tfar(args->ray, args->N, i)))
+    if (prims.intersect_shape(prim, ray_of(args->ray, args->N, i), range_of(args->ray, args->N, i)))
       RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;  // Embree's "occluded" mark
   }
 }
 
-RTCRay embree_ray(const Ray& ray, float t_max) {
+RTCRay embree_ray(const Ray& ray, Interval t_range) {
   RTCRay r{};
   r.org_x = ray.origin.x;
   r.org_y = ray.origin.y;
@@ -87,8 +94,8 @@ RTCRay embree_ray(const Ray& ray, float t_max) {
   r.dir_x = ray.direction.x;
   r.dir_y = ray.direction.y;
   r.dir_z = ray.direction.z;
-  r.tnear = kTNear;
-  r.tfar = t_max;
+  r.tnear = std::max(kTNear, t_range.min);
+  r.tfar = t_range.max;
   r.mask = ~0u;
   r.flags = 0;
   return r;
@@ -101,8 +108,8 @@ bool valid_query(const Ray& ray, float t_max) {
 
 }  // namespace
 
-EmbreeAccelerator::EmbreeAccelerator(const World& world, int threads, bool exact_hits)
-    : world_(world), bounds_(world.bounds()), exact_hits_(exact_hits) {
+EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, bool exact_hits)
+    : prims_(prims), bounds_(prims.bounds()), exact_hits_(exact_hits) {
   // Create the device, counting every byte it allocates.
   const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
   device_ = rtcNewDevice(config.c_str());
@@ -113,39 +120,31 @@ EmbreeAccelerator::EmbreeAccelerator(const World& world, int threads, bool exact
   // Robust mode makes Embree's triangle test watertight, as mjray's own (Woop et al.) is.
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
 
-  // Triangles: one geometry with all meshes' world-space vertices, in primitive order.
-  if (!world.triangles.empty()) {
-    std::vector<uint32_t> first_vertex(world.meshes.size() + 1, 0);
-    for (size_t m = 0; m < world.meshes.size(); ++m)
-      first_vertex[m + 1] = first_vertex[m] + uint32_t(world.meshes[m].positions.size());
+  // Triangles: one geometry over the world-space vertices, in primitive order.
+  if (!prims.triangles.empty()) {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), first_vertex.back()));
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), prims.vertices.size()));
     auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), world.triangles.size()));
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), prims.triangles.size()));
     if (vertices && indices) {
-      for (size_t m = 0; m < world.meshes.size(); ++m)
-        for (size_t v = 0; v < world.meshes[m].positions.size(); ++v) {
-          const Point3& p = world.meshes[m].positions[v];
-          float* out = vertices + 3 * (first_vertex[m] + v);
-          out[0] = p.x, out[1] = p.y, out[2] = p.z;
-        }
-      for (size_t t = 0; t < world.triangles.size(); ++t) {
-        const WorldTriangle& tri = world.triangles[t];
-        const auto& corners = world.meshes[tri.mesh].triangles[tri.face];
-        for (int k = 0; k < 3; ++k) indices[3 * t + k] = first_vertex[tri.mesh] + uint32_t(corners[k].position);
+      for (size_t v = 0; v < prims.vertices.size(); ++v) {
+        const Point3& p = prims.vertices[v];
+        vertices[3 * v] = p.x, vertices[3 * v + 1] = p.y, vertices[3 * v + 2] = p.z;
       }
+      for (size_t t = 0; t < prims.triangles.size(); ++t)
+        for (size_t k = 0; k < 3; ++k) indices[3 * t + k] = prims.triangles[t][k];
     }
     rtcCommitGeometry(geometry);
     rtcAttachGeometryByID(scene_, geometry, kTriangleGeometry);
     rtcReleaseGeometry(geometry);
   }
 
-  // Spheres and cubes: one user geometry that defers to the World.
-  if (!world.shapes.empty()) {
+  // Shapes: one user geometry that defers to the PrimitiveSet.
+  if (!prims.shapes.empty()) {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(world.shapes.size()));
-    rtcSetGeometryUserData(geometry, const_cast<World*>(&world));
+    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(prims.shapes.size()));
+    rtcSetGeometryUserData(geometry, const_cast<PrimitiveSet*>(&prims));
     rtcSetGeometryBoundsFunction(geometry, shape_bounds, nullptr);
     rtcSetGeometryIntersectFunction(geometry, shape_intersect);
     rtcSetGeometryOccludedFunction(geometry, shape_occluded);
@@ -175,25 +174,25 @@ size_t EmbreeAccelerator::memory_bytes() const {
   return bytes > 0 ? size_t(bytes) : 0;
 }
 
-std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, float t_max) const {
-  if (!valid_query(ray, t_max)) return std::nullopt;
+std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, Interval t_range) const {
+  if (!valid_query(ray, t_range.max)) return std::nullopt;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayhit;
-  rayhit.ray = embree_ray(ray, t_max);
+  rayhit.ray = embree_ray(ray, t_range);
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayhit);
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   if (rayhit.hit.geomID == kShapeGeometry)
-    return Hit{rayhit.ray.tfar, uint32_t(world_.triangles.size()) + rayhit.hit.primID};
+    return Hit{rayhit.ray.tfar, uint32_t(prims_.triangles.size()) + rayhit.hit.primID};
   // Recompute the hit with mjray's own watertight test, so that t, u and v (and with them
   // the image) are bit for bit those of every other accelerator. Embree's (u, v) weight
   // vertices 1 and 2 as mjray's (b1, b2) do; they are the fallback should the exact test
   // miss a triangle Embree grazed.
   const uint32_t prim = rayhit.hit.primID;
   if (exact_hits_)
-    if (auto exact = world_.intersect_primitive(prim, ray, kInfinity)) return exact;
+    if (auto exact = prims_.intersect(prim, ray, {t_range.min, kInfinity})) return exact;
   return Hit{rayhit.ray.tfar, prim, rayhit.hit.u, rayhit.hit.v};
 }
 
@@ -201,7 +200,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
   if (!valid_query(ray, t_max)) return false;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay r = embree_ray(ray, t_max);
+  RTCRay r = embree_ray(ray, {0, t_max});
   rtcOccluded1(scene_, &context, &r);
   return r.tfar < 0;
 }

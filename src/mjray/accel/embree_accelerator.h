@@ -6,28 +6,28 @@
 #include <cstdint>
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/primitive_set.h"
 
 struct RTCDeviceTy;
 struct RTCSceneTy;
 
 namespace mjray {
 
-/// Embree's high-quality BVH over the World: triangles as one native triangle geometry (Embree
-/// primID = mjray primitive id), spheres and cubes as one user geometry whose callbacks call
-/// World::intersect_primitive, so shapes hit exactly as with every other accelerator.
+/// Embree's high-quality BVH over a PrimitiveSet: triangles as one native triangle geometry
+/// (Embree primID = mjray primitive id), shapes as one user geometry whose callbacks call
+/// PrimitiveSet::intersect_shape, so shapes hit exactly as with every other accelerator.
 class EmbreeAccelerator final : public Accelerator {
  public:
-  /// Builds over `world` (which must outlive this); `threads` build threads, 0 = all cores.
+  /// Builds over `prims` (which must outlive this); `threads` build threads, 0 = all cores.
   /// Throws SceneError when Embree cannot create a device or build the scene.
   /// With `exact_hits` (the default) each hit is recomputed with mjray's own triangle test, so
   /// images match the other accelerators bit for bit; benchmarks turn it off to time Embree alone.
-  explicit EmbreeAccelerator(const World& world, int threads = 0, bool exact_hits = true);
+  explicit EmbreeAccelerator(const PrimitiveSet& prims, int threads = 0, bool exact_hits = true);
   ~EmbreeAccelerator() override;
   EmbreeAccelerator(const EmbreeAccelerator&) = delete;
   EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
 
-  std::optional<Hit> intersect(const Ray& ray, float t_max) const override;
+  std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "embree"; }
@@ -37,7 +37,7 @@ class EmbreeAccelerator final : public Accelerator {
  private:
   void release();
 
-  const World& world_;
+  const PrimitiveSet& prims_;
   Bounds3 bounds_;
   bool exact_hits_ = true;
   RTCDeviceTy* device_ = nullptr;

@@ -19,13 +19,13 @@ std::string accelerator_names() {
 #endif
 }
 
-std::unique_ptr<Accelerator> make_accelerator(const World& world, const AcceleratorOptions& options) {
-  if (options.kind == "bvh") return std::make_unique<Bvh>(world, options.threads);
-  if (options.kind == "none") return std::make_unique<BruteForce>(world);
-  if (options.kind == "grid") return std::make_unique<UniformGrid>(world, options.grid_size);
+std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options) {
+  if (options.kind == "bvh") return std::make_unique<Bvh>(prims, options.threads);
+  if (options.kind == "none") return std::make_unique<BruteForce>(prims);
+  if (options.kind == "grid") return std::make_unique<UniformGrid>(prims, options.grid_size);
   if (options.kind == "embree") {
 #ifdef MJRAY_HAVE_EMBREE
-    return std::make_unique<EmbreeAccelerator>(world, options.threads, options.embree_exact_hits);
+    return std::make_unique<EmbreeAccelerator>(prims, options.threads, options.embree_exact_hits);
 #else
     throw SceneError("accelerator 'embree' is not available: this mjray was built without Embree "
                      "(install libembree-dev and configure with -DMJRAY_WITH_EMBREE=ON)");

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
 
@@ -20,8 +20,8 @@ struct AcceleratorOptions {
 /// The names --accel accepts in this build.
 std::string accelerator_names();
 
-/// Builds the accelerator over `world` (which must outlive it). Throws SceneError for an
+/// Builds the accelerator over `prims` (which must outlive it). Throws SceneError for an
 /// unknown or unavailable kind.
-std::unique_ptr<Accelerator> make_accelerator(const World& world, const AcceleratorOptions& options);
+std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options);
 
 }  // namespace mjray

@@ -78,21 +78,21 @@ int optimal_grid_resolution(size_t primitive_count) {
   return std::max(1, int(std::lround(3 * std::cbrt(double(primitive_count)))));
 }
 
-UniformGrid::UniformGrid(const World& world, int resolution)
-    : world_(world), triangle_count_(uint32_t(world.triangles.size())) {
+UniformGrid::UniformGrid(const PrimitiveSet& prims, int resolution)
+    : primitives_(prims), triangle_count_(uint32_t(prims.triangles.size())) {
   // Copy triangle corners into one array, so voxel tests read them without indirection.
   corners_.reserve(triangle_count_);
   for (uint32_t prim = 0; prim < triangle_count_; ++prim) {
-    const auto v = world.triangle_vertices(prim);
+    const auto v = prims.triangle_vertices(prim);
     using Floats = std::array<float, 3>;
     corners_.push_back({std::bit_cast<Floats>(v[0]), std::bit_cast<Floats>(v[1]), std::bit_cast<Floats>(v[2])});
   }
 
   // Compute primitive bounds; primitives without finite bounds cannot be placed in voxels.
-  const uint32_t n = world.primitive_count();
+  const uint32_t n = prims.size();
   std::vector<Bounds3> prim_bounds(n);
   for (uint32_t prim = 0; prim < n; ++prim) {
-    prim_bounds[prim] = world.primitive_bounds(prim);
+    prim_bounds[prim] = prims.primitive_bounds(prim);
     if (is_finite(prim_bounds[prim]))
       bounds_.expand(prim_bounds[prim]);
     else
@@ -149,9 +149,9 @@ UniformGrid::UniformGrid(const World& world, int resolution)
         spanning += last[a] > first[a];
       }
       // A triangle spanning voxels along at most one axis meets every voxel of that run.
-      const bool test_each = world.is_triangle(prim) && spanning >= 2;
+      const bool test_each = prims.is_triangle(prim) && spanning >= 2;
       std::optional<TriangleBoxTester> tester;
-      if (test_each) tester.emplace(world.triangle_vertices(prim), half);
+      if (test_each) tester.emplace(prims.triangle_vertices(prim), half);
       for (int z = first[2]; z <= last[2]; ++z)
         for (int y = first[1]; y <= last[1]; ++y)
           for (int x = first[0]; x <= last[0]; ++x) {
@@ -207,22 +207,24 @@ size_t UniformGrid::memory_bytes() const {
          occupied_.capacity() * sizeof(uint64_t) + corners_.capacity() * sizeof(corners_[0]);
 }
 
-std::optional<Hit> UniformGrid::intersect(const Ray& ray, float t_max) const {
-  return traverse<false>(ray, t_max);
+std::optional<Hit> UniformGrid::intersect(const Ray& ray, Interval t_range) const {
+  return traverse<false>(ray, t_range);
 }
 
 bool UniformGrid::occluded(const Ray& ray, float t_max) const {
-  return traverse<true>(ray, t_max).has_value();
+  return traverse<true>(ray, {0, t_max}).has_value();
 }
 
 template <bool kAnyHit>
-std::optional<Hit> UniformGrid::traverse(const Ray& ray, float t_max) const {
+std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range) const {
   std::optional<Hit> nearest;
-  if (!(t_max > 0) || !is_finite(ray.origin) || !is_finite(ray.direction)) return nearest;
+  const float t_min = t_range.min;
+  float t_max = t_range.max;
+  if (!(t_max > t_min) || !is_finite(ray.origin) || !is_finite(ray.direction)) return nearest;
 
   // Test the primitives that live outside the voxels.
   for (const uint32_t prim : unbounded_) {
-    if (auto hit = world_.intersect_primitive(prim, ray, t_max)) {
+    if (auto hit = primitives_.intersect(prim, ray, {t_min, t_max})) {
       if constexpr (kAnyHit) return hit;
       t_max = hit->t;
       nearest = hit;
@@ -233,7 +235,7 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, float t_max) const {
   // Clip the ray to the grid box; a direction component too small to invert makes the ray
   // parallel to that axis's slabs.
   float inv_dir[3];
-  float t_enter = 0, t_exit = t_max;
+  float t_enter = t_min, t_exit = t_max;
   for (int a = 0; a < 3; ++a) {
     inv_dir[a] = 1 / ray.direction[a];
     if (!std::isfinite(inv_dir[a])) {
@@ -291,9 +293,10 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, float t_max) const {
         std::optional<Hit> hit;
         if (prim < triangle_count_) {
           const auto& c = corners_[prim];
-          if (const auto h = intersect_triangle(watertight, t_max, c[0], c[1], c[2])) hit = Hit{h->t, prim, h->b1, h->b2};
+          if (const auto h = intersect_triangle(watertight, {t_min, t_max}, c[0], c[1], c[2]))
+            hit = Hit{h->t, prim, h->b1, h->b2};
         } else {
-          hit = world_.intersect_primitive(prim, ray, t_max);
+          hit = primitives_.intersect_shape(prim, ray, {t_min, t_max});
         }
         if (hit) {
           if constexpr (kAnyHit) return hit;

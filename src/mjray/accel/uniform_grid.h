@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
 
@@ -20,12 +20,12 @@ int optimal_grid_resolution(size_t primitive_count);
 /// spheres and cubes in every voxel of their world AABB.
 class UniformGrid final : public Accelerator {
  public:
-  /// Builds `resolution`³ voxels over `world` (which must outlive the grid); 0 = optimal,
+  /// Builds `resolution`³ voxels over `prims` (which must outlive the grid); 0 = optimal,
   /// negative = 1. The resolution is capped (256) and halved while the primitive references
   /// would exceed a memory budget, so huge -g values or huge shapes cannot exhaust memory.
-  UniformGrid(const World& world, int resolution);
+  UniformGrid(const PrimitiveSet& prims, int resolution);
 
-  std::optional<Hit> intersect(const Ray& ray, float t_max) const override;
+  std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "grid"; }
@@ -40,9 +40,9 @@ class UniformGrid final : public Accelerator {
 
  private:
   template <bool kAnyHit>
-  std::optional<Hit> traverse(const Ray& ray, float t_max) const;
+  std::optional<Hit> traverse(const Ray& ray, Interval t_range) const;
 
-  const World& world_;
+  const PrimitiveSet& primitives_;
   uint32_t triangle_count_ = 0;
   Bounds3 bounds_;                      ///< of all primitives, unpadded
   Point3 grid_lo_;                      ///< padded grid box corner

@@ -18,4 +18,12 @@ struct Ray {
   constexpr Point3 at(float t) const { return origin + direction * t; }
 };
 
+/// The open range (min, max) of ray parameters a query accepts.
+struct Interval {
+  float min = 0;
+  float max = kInfinity;
+
+  constexpr bool contains(float t) const { return t > min && t < max; }
+};
+
 }  // namespace mjray

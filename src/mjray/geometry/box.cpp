@@ -5,7 +5,7 @@
 
 namespace mjray {
 
-std::optional<float> intersect_unit_cube(const Ray& r, float t_max) {
+std::optional<float> intersect_unit_cube(const Ray& r, Interval t_range) {
   // Slab test (Williams et al. 2005): IEEE infinities handle axis-parallel rays.
   float t_enter = -kInfinity, t_exit = kInfinity;
   for (int axis = 0; axis < 3; ++axis) {
@@ -23,8 +23,8 @@ std::optional<float> intersect_unit_cube(const Ray& r, float t_max) {
   }
   if (!(t_enter <= t_exit)) return std::nullopt;
   // From outside the ray hits the entry face; from inside, the exit face.
-  const float t = t_enter > 0 ? t_enter : t_exit;
-  if (!(t > 0) || !(t < t_max)) return std::nullopt;
+  const float t = t_enter > t_range.min ? t_enter : t_exit;
+  if (!(t > t_range.min) || !(t < t_range.max)) return std::nullopt;
   return t;
 }
 

@@ -9,8 +9,8 @@
 
 namespace mjray {
 
-/// Nearest t in (0, t_max) where the object-space ray meets the unit cube's surface.
-std::optional<float> intersect_unit_cube(const Ray& object_ray, float t_max);
+/// Nearest t in the open range `t_range` where the object-space ray meets the unit cube's surface.
+std::optional<float> intersect_unit_cube(const Ray& object_ray, Interval t_range);
 
 inline Bounds3 unit_cube_bounds() { return {{0, 0, 0}, {1, 1, 1}}; }
 

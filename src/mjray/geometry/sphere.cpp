@@ -5,7 +5,7 @@
 
 namespace mjray {
 
-std::optional<float> intersect_unit_sphere(const Ray& r, float t_max) {
+std::optional<float> intersect_unit_sphere(const Ray& r, Interval t_range) {
   // Solve |o + t·d|² = 1 in double, with the stable form of the quadratic roots.
   const double ox = r.origin.x, oy = r.origin.y, oz = r.origin.z;
   const double dx = r.direction.x, dy = r.direction.y, dz = r.direction.z;
@@ -23,8 +23,9 @@ std::optional<float> intersect_unit_sphere(const Ray& r, float t_max) {
   double t0 = q != 0 ? c / q : 0.0;
   double t1 = q / a;
   if (t0 > t1) std::swap(t0, t1);
-  const double t = t0 > 0 ? t0 : t1;
-  if (!(t > 0) || !(t < t_max)) return std::nullopt;
+  const double t_min = t_range.min;
+  const double t = t0 > t_min ? t0 : t1;
+  if (!(t > t_min) || !(t < t_range.max)) return std::nullopt;
   return float(t);
 }
 

@@ -10,8 +10,8 @@
 
 namespace mjray {
 
-/// Nearest t in (0, t_max) where the object-space ray meets the unit sphere, or nothing.
-std::optional<float> intersect_unit_sphere(const Ray& object_ray, float t_max);
+/// Nearest t in the open range `t_range` where the object-space ray meets the unit sphere, or nothing.
+std::optional<float> intersect_unit_sphere(const Ray& object_ray, Interval t_range);
 
 /// The object-space bounds of the unit sphere.
 inline Bounds3 unit_sphere_bounds() { return {{-1, -1, -1}, {1, 1, 1}}; }

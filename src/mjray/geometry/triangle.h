@@ -43,10 +43,11 @@ struct WatertightRay {
   }
 };
 
-/// The hit of the prepared ray with triangle (p0, p1, p2) for t in (0, t_max), or nothing.
+/// The hit of the prepared ray with triangle (p0, p1, p2) for t in (t_range.min, t_range.max]
+/// (a hit exactly at max counts), or nothing.
 /// Inline so that accelerators' leaf loops share exactly this arithmetic (and so the same
 /// barycentrics) with `intersect_triangle` below.
-inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, float t_max,
+inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, Interval t_range,
                                                      const std::array<float, 3>& p0,
                                                      const std::array<float, 3>& p1,
                                                      const std::array<float, 3>& p2) {
@@ -75,20 +76,21 @@ inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, f
   const float det = e0 + e1 + e2;
   if (!(det != 0) || !std::isfinite(det)) return std::nullopt;
 
-  // Compute the scaled distance and reject hits outside (0, t_max) before dividing.
+  // Compute the scaled distance and reject hits outside the range before dividing.
   const float t_scaled = e0 * (az * ray.sz) + e1 * (bz * ray.sz) + e2 * (cz * ray.sz);
-  if (det < 0 && (t_scaled >= 0 || t_scaled < t_max * det)) return std::nullopt;
-  if (det > 0 && (t_scaled <= 0 || t_scaled > t_max * det)) return std::nullopt;
+  const float t_min = t_range.min, t_max = t_range.max;
+  if (det < 0 && (t_scaled >= t_min * det || t_scaled < t_max * det)) return std::nullopt;
+  if (det > 0 && (t_scaled <= t_min * det || t_scaled > t_max * det)) return std::nullopt;
 
   const float inv_det = 1 / det;
   const float t = t_scaled * inv_det;
-  if (!(t > 0) || !std::isfinite(t)) return std::nullopt;
+  if (!(t > t_min) || !std::isfinite(t)) return std::nullopt;
   return TriangleHit{t, e1 * inv_det, e2 * inv_det};
 }
 
-/// The hit of `ray` with triangle (p0, p1, p2) for t in (0, t_max), or nothing.
+/// The hit of `ray` with triangle (p0, p1, p2) for t in (t_range.min, t_range.max], or nothing.
 /// Never reports a hit for NaN/Inf input or a degenerate (zero-area) triangle.
-std::optional<TriangleHit> intersect_triangle(const Ray& ray, float t_max, const Point3& p0,
+std::optional<TriangleHit> intersect_triangle(const Ray& ray, Interval t_range, const Point3& p0,
                                               const Point3& p1, const Point3& p2);
 
 }  // namespace mjray

@@ -1,14 +1,11 @@
 #include "mjray/integrator/whitted_integrator.h"
 
 #include <cmath>
-#include <numbers>
 
-#include "mjray/integrator/sampling.h"
-#include "mjray/integrator/spawn_ray.h"
-#include "mjray/material/optics.h"
+#include "mjray/core/sampling.h"
+#include "mjray/geometry/spawn_ray.h"
 
 namespace mjray {
-
 
 Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const {
   ++counters.primary;
@@ -17,64 +14,58 @@ Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, RayCount
 
 Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random,
                                RayCounters& counters) const {
-  const auto hit = accel_.intersect(ray, kInfinity);
+  const auto hit = accel_.intersect(ray, {});
   if (!hit) return world_.background_radiance(ray.direction);
   const SurfaceInteraction si = world_.interaction(ray, *hit);
   const Material& material = world_.materials[si.material];
   // Shade with the normal that faces the viewer.
   const Vector3 wo = normalize(-ray.direction);
-  const Normal3 n = face_forward(si.shading_normal, wo);
-  return direct_light(si, n, wo, material, random, counters) +
-         secondary_light(si, n, wo, material, depth, random, counters);
+  const ShadingFrame frame{wo, face_forward(si.shading_normal, wo), si.geometric_normal};
+  // A texture replaces kd here: evaluated once for all lights.
+  const LocalShading local = local_shading(material, si);
+  // The specular lobes draw their samples first, then direct light: the order is part of
+  // the image.
+  const Color specular = specular_light(si, frame, specular_lobes(material, frame), depth, random, counters);
+  return direct_light(si, frame, local, random, counters) + specular;
 }
 
-Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Normal3& n,
-                                      const Vector3& wo, const Material& material,
-                                      RandomStream& random, RayCounters& counters) const {
-  // A texture replaces kd at this hit: evaluate it once for all lights (the copy leaves the
-  // texture pointer behind, so threads do not contend on its reference count).
-  const PhongMaterial& base = phong_of(material);
-  const PhongMaterial phong{base.kd_at(si.object_point, si.uv), base.ks, base.shininess};
-  Color result = world_.ambient * phong.kd;
+Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const ShadingFrame& frame,
+                                      const LocalShading& local, RandomStream& random,
+                                      RayCounters& counters) const {
+  Color result = local.ambient(world_.ambient);
   for (const Light& light : world_.lights) {
-    if (const auto* point = std::get_if<PointLight>(&light)) {
-      const float distance = length(point->position - si.point);
-      result += light_sample(si, n, wo, phong, point->position, point->colour * point->attenuation(distance), counters);
+    // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
+    // gives an area light the hard shadow of a point light there).
+    const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
+    if (n == 1) {
+      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), counters);
       continue;
     }
-    // Compute the mean over an N×N jittered grid on the area light (its centre when N = 1,
-    // which gives the hard shadow of a point light there).
-    const auto& area = std::get<AreaLight>(light);
-    const int samples = std::max(1, settings_.area_light_samples);
     Color sum;
-    for (int j = 0; j < samples; ++j)
-      for (int i = 0; i < samples; ++i) {
-        const float jitter_s = samples == 1 ? 0.5f : random.uniform();
-        const float jitter_t = samples == 1 ? 0.5f : random.uniform();
-        const Point3 p = area.point_at((float(i) + jitter_s) / float(samples), (float(j) + jitter_t) / float(samples));
-        sum += light_sample(si, n, wo, phong, p, area.colour * area.attenuation(length(p - si.point)), counters);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const float jitter_s = random.uniform();
+        const float jitter_t = random.uniform();
+        const Point2 u{(float(i) + jitter_s) / float(n), (float(j) + jitter_t) / float(n)};
+        sum += light_sample(si, frame, local, sample_li(light, si.point, u), counters);
       }
-    result += sum / float(samples * samples);
+    result += sum / float(n * n);
   }
   return result;
 }
 
-Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Normal3& n,
-                                      const Vector3& wo, const PhongMaterial& phong,
-                                      const Point3& light_point, const Color& intensity,
+Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const ShadingFrame& frame,
+                                      const LocalShading& local, const LightSample& sample,
                                       RayCounters& counters) const {
-  const Vector3 to_light = light_point - si.point;
+  const Vector3 to_light = sample.position - si.point;
   const float distance = length(to_light);
   if (!(distance > 0)) return {};
   const Vector3 l = to_light / distance;
-  const float n_dot_l = dot(n, l);
+  const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
   ++counters.shadow;
-  if (accel_.occluded(spawn_ray_to(si, light_point), kShadowTMax)) return {};
-  // Phong's mirror direction r of the light about n, compared with the view direction.
-  const Vector3 r = Vector3(n) * (2 * n_dot_l) - l;
-  const float r_dot_v = std::max(0.f, dot(r, wo));
-  return (phong.kd * n_dot_l + phong.ks * std::pow(r_dot_v, phong.shininess)) * intensity;
+  if (accel_.occluded(spawn_ray_to(si, sample.position), kShadowTMax)) return {};
+  return local.phong(frame, l, n_dot_l) * sample.intensity;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
@@ -89,63 +80,37 @@ Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vec
   return trace(spawn_ray(si, direction), depth, random, counters);
 }
 
-template <class ReflectanceFunction>
-Color WhittedIntegrator::dielectric_light(const SurfaceInteraction& si, const Normal3& n,
-                                          const Vector3& wo, float eta_outside, float eta_inside,
-                                          ReflectanceFunction kr_of_cosine, Depth depth,
-                                          RandomStream& random, RayCounters& counters) const {
-  // Entering or leaving is decided by the geometric normal, which points out of the object.
-  const bool entering = dot(wo, si.geometric_normal) > 0;
-  const float eta_i = entering ? eta_outside : eta_inside;
-  const float eta_t = entering ? eta_inside : eta_outside;
-  const float cos_i = dot(wo, n);
-  float kr = kr_of_cosine(cos_i, eta_i, eta_t);
-  const auto transmitted = refract(wo, n, eta_i / eta_t);
-  if (!transmitted) kr = 1;  // total internal reflection: the refracted share reflects
+Color WhittedIntegrator::specular_light(const SurfaceInteraction& si, const ShadingFrame& frame,
+                                        const SpecularLobes& lobes, Depth depth, RandomStream& random,
+                                        RayCounters& counters) const {
   Color result;
-  if (kr > 0 && depth.reflection < settings_.max_reflection_depth)
-    result += kr * trace_secondary(si, reflect(wo, n), depth.reflected(kr), random, counters);
-  if (kr < 1 && depth.refraction < settings_.max_refraction_depth)
-    result += (1 - kr) * trace_secondary(si, *transmitted, depth.refracted(1 - kr), random, counters);
+  for (const SpecularLobe& lobe : lobes) {
+    if (!within_depth(lobe.kind, depth)) continue;
+    const Depth next = depth.after(lobe.kind, lobe.weight);
+    // A glossy lobe blurs only the first reflection (as the original): deeper ones are mirrors.
+    if (lobe.samples > 1 && depth.reflection == 0)
+      result += glossy_light(si, frame, lobe, next, random, counters);
+    else
+      result += lobe.weight * trace_secondary(si, lobe.direction, next, random, counters);
+  }
   return result;
 }
 
-Color WhittedIntegrator::secondary_light(const SurfaceInteraction& si, const Normal3& n,
-                                         const Vector3& wo, const Material& material, Depth depth,
-                                         RandomStream& random, RayCounters& counters) const {
-  const bool may_reflect = depth.reflection < settings_.max_reflection_depth;
-  if (const auto* m = std::get_if<ReflectiveMaterial>(&material)) {
-    if (!may_reflect || m->reflectivity <= 0) return {};
-    return m->reflectivity * trace_secondary(si, reflect(wo, n), depth.reflected(m->reflectivity), random, counters);
+Color WhittedIntegrator::glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame,
+                                      const SpecularLobe& lobe, Depth next, RandomStream& random,
+                                      RayCounters& counters) const {
+  Color sum;
+  const int samples = lobe.samples;
+  for (int k = 0; k < samples; ++k) {
+    // Stratify u1 into `samples` strata; pair them with a jittered golden-ratio sequence.
+    const float u1 = (float(k) + random.uniform()) / float(samples);
+    const float u2 = std::fmod(float(k) * 0.618033988749895f + random.uniform() / float(samples), 1.f);
+    Vector3 d = sample_cone(lobe.direction, lobe.cos_cone, u1, u2);
+    // A direction below the surface falls back to the lobe's axis.
+    if (dot(d, si.geometric_normal) * dot(frame.wo, si.geometric_normal) <= 0) d = lobe.direction;
+    sum += trace_secondary(si, d, next, random, counters);
   }
-  if (const auto* m = std::get_if<RefractiveMaterial>(&material)) {
-    const float kr = m->reflectivity;
-    return dielectric_light(si, n, wo, m->eta_outside, m->eta_inside,
-                            [kr](float, float, float) { return kr; }, depth, random, counters);
-  }
-  if (const auto* m = std::get_if<FresnelMaterial>(&material)) {
-    return dielectric_light(si, n, wo, m->eta_outside, m->eta_inside, fresnel_dielectric, depth, random, counters);
-  }
-  if (const auto* m = std::get_if<GlossyMaterial>(&material)) {
-    if (!may_reflect || m->reflectivity <= 0) return {};
-    const Vector3 mirror = reflect(wo, n);
-    const Depth reflected = depth.reflected(m->reflectivity);
-    // Blur only the first reflection (as the original): deeper ones are plain mirrors.
-    if (depth.reflection > 0 || m->samples <= 1)
-      return m->reflectivity * trace_secondary(si, mirror, reflected, random, counters);
-    Color sum;
-    const float cos_max = m->cos_cone_angle();
-    for (int k = 0; k < m->samples; ++k) {
-      // Stratify u1 into `samples` strata; pair them with a jittered golden-ratio sequence.
-      const float u1 = (float(k) + random.uniform()) / float(m->samples);
-      const float u2 = std::fmod(float(k) * 0.618033988749895f + random.uniform() / float(m->samples), 1.f);
-      Vector3 d = sample_cone(mirror, cos_max, u1, u2);
-      if (dot(d, si.geometric_normal) * dot(wo, si.geometric_normal) <= 0) d = mirror;  // below the surface
-      sum += trace_secondary(si, d, reflected, random, counters);
-    }
-    return m->reflectivity * sum / float(m->samples);
-  }
-  return {};  // PhongMaterial: local shading only
+  return lobe.weight * sum / float(samples);
 }
 
 }  // namespace mjray

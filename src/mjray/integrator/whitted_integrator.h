@@ -1,84 +1,65 @@
 #pragma once
-/// Recursive ray tracing with the CS 488 Phong model, hard shadows and secondary rays.
-
-#include <cstdint>
+/// Recursive ray tracing with the CS 488 Phong model, shadows and specular secondary rays.
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/core/color.h"
-#include "mjray/core/rng.h"
-#include "mjray/core/ray.h"
+#include "mjray/integrator/integrator.h"
+#include "mjray/material/shading.h"
 #include "mjray/scene/world.h"
 
 namespace mjray {
 
-/// Limits on recursion (-r, -f).
+/// Limits on recursion (-r, -f) and light sampling (-s).
 struct IntegratorSettings {
   int max_reflection_depth = 8;  ///< reflection, glossy and Fresnel reflection rays
   int max_refraction_depth = 8;  ///< transmission rays
   int area_light_samples = 1;    ///< -s: N×N jittered shadow rays per area light
 };
 
-/// Rays cast, by kind; each thread keeps its own and they are summed at the end.
-/// Cache-line aligned: each worker thread updates its own on every ray, so neighbours in an
-/// array must not share a line (false sharing would serialise the threads).
-struct alignas(64) RayCounters {
-  uint64_t primary = 0;
-  uint64_t secondary = 0;
-  uint64_t shadow = 0;
-
-  RayCounters& operator+=(const RayCounters& o) {
-    primary += o.primary;
-    secondary += o.secondary;
-    shadow += o.shadow;
-    return *this;
-  }
-  uint64_t total() const { return primary + secondary + shadow; }
-};
-
-/// Computes the colour seen along a camera ray.
-class WhittedIntegrator {
+/// Whitted's recursion as CS 488 and the original project define it: local Phong shading
+/// with shadow rays at every hit, plus the light arriving along each material's specular
+/// lobes. Asks materials and lights; names none of them.
+class WhittedIntegrator final : public Integrator {
  public:
   WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings)
       : world_(world), accel_(accel), settings_(settings) {}
 
-  /// The colour along a primary ray (direction unit length); `random` supplies every sample.
-  Color radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const;
+  Color radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const override;
 
  private:
   /// Where a ray is in the recursion: bounces of each kind so far, and the weight its
-  /// colour will have in the pixel (the product of the Kr/Kt factors along the way).
+  /// colour will have in the pixel (the product of the lobe weights along the way).
   struct Depth {
     int reflection = 0;
     int refraction = 0;
     float weight = 1;
 
-    Depth reflected(float factor) const { return {reflection + 1, refraction, weight * factor}; }
-    Depth refracted(float factor) const { return {reflection, refraction + 1, weight * factor}; }
+    Depth after(LobeKind kind, float factor) const {
+      return kind == LobeKind::kReflection ? Depth{reflection + 1, refraction, weight * factor}
+                                           : Depth{reflection, refraction + 1, weight * factor};
+    }
   };
 
   Color trace(const Ray& ray, Depth depth, RandomStream& random, RayCounters& counters) const;
   /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
-  Color direct_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
-                     const Material& material, RandomStream& random, RayCounters& counters) const;
-  /// The Phong reflection of one light sample at `light_point`, or black when it is behind
-  /// the surface or in shadow.
-  Color light_sample(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
-                     const PhongMaterial& phong, const Point3& light_point, const Color& intensity,
-                     RayCounters& counters) const;
-  /// Light arriving by reflection and refraction: the hook that the materials of the
-  /// original project's extensions plug into. Plain Phong materials add nothing.
-  Color secondary_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
-                        const Material& material, Depth depth, RandomStream& random,
-                        RayCounters& counters) const;
-  /// Kr · reflected + Kt · refracted for a dielectric boundary; kr_of_cosine gives Kr from the
-  /// cosine of the incident angle and the two indices (constant, or Fresnel).
-  template <class ReflectanceFunction>
-  Color dielectric_light(const SurfaceInteraction& si, const Normal3& n, const Vector3& wo,
-                         float eta_outside, float eta_inside, ReflectanceFunction kr_of_cosine,
-                         Depth depth, RandomStream& random, RayCounters& counters) const;
+  Color direct_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
+                     RandomStream& random, RayCounters& counters) const;
+  /// The Phong reflection of one light sample, or black when it is behind the surface or
+  /// in shadow.
+  Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
+                     const LightSample& sample, RayCounters& counters) const;
+  /// Light arriving along the material's specular lobes, within the depth limits.
+  Color specular_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobes& lobes,
+                       Depth depth, RandomStream& random, RayCounters& counters) const;
+  /// The mean of a glossy lobe's rays over its cone.
+  Color glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobe& lobe,
+                     Depth next, RandomStream& random, RayCounters& counters) const;
   /// The light arriving along a secondary ray leaving si.
   Color trace_secondary(const SurfaceInteraction& si, const Vector3& direction, Depth depth,
                         RandomStream& random, RayCounters& counters) const;
+  bool within_depth(LobeKind kind, const Depth& depth) const {
+    return kind == LobeKind::kReflection ? depth.reflection < settings_.max_reflection_depth
+                                         : depth.refraction < settings_.max_refraction_depth;
+  }
 
   const World& world_;
   const Accelerator& accel_;

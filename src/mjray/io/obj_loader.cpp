@@ -27,7 +27,7 @@ class ObjParser {
   ObjParser(std::string_view text, const std::string& source_name)
       : p_(text.data()), end_(text.data() + text.size()), source_name_(source_name) {}
 
-  ObjMesh parse() {
+  TriangleMesh parse() {
     // Skip a UTF-8 byte-order mark, which would otherwise hide the first statement.
     constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
     if (std::string_view(p_, static_cast<size_t>(end_ - p_)).starts_with(kUtf8Bom)) p_ += 3;
@@ -177,12 +177,12 @@ class ObjParser {
 
   void parse_face() {
     // Emit the fan (c0, ci-1, ci) as corners arrive, so no per-face buffer is needed.
-    ObjCorner first, previous;
+    MeshCorner first, previous;
     size_t corners = 0;
     while (true) {
       skip_blanks();
       if (at_statement_end()) break;
-      const ObjCorner corner = read_corner();
+      const MeshCorner corner = read_corner();
       if (corners >= 2) {
         mesh_.triangles.push_back({first, previous, corner});
       } else if (corners == 0) {
@@ -199,9 +199,9 @@ class ObjParser {
   }
 
   // Reads `a`, `a/b`, `a//c` or `a/b/c`; an empty field after a slash means "absent".
-  ObjCorner read_corner() {
+  MeshCorner read_corner() {
     const char* start = p_;
-    ObjCorner corner;
+    MeshCorner corner;
     corner.position = read_index(start, mesh_.positions.size(), "position");
     if (p_ != end_ && *p_ == '/') {
       ++p_;
@@ -260,16 +260,16 @@ class ObjParser {
   const char* end_;
   const std::string& source_name_;
   size_t line_ = 1;
-  ObjMesh mesh_;
+  TriangleMesh mesh_;
 };
 
 }  // namespace
 
-ObjMesh parse_obj(std::string_view text, const std::string& source_name) {
+TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
   return ObjParser(text, source_name).parse();
 }
 
-ObjMesh load_obj(const std::filesystem::path& path) {
+TriangleMesh load_obj(const std::filesystem::path& path) {
   const std::string name = path.string();
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);

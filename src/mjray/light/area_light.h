@@ -1,13 +1,14 @@
 #pragma once
 /// gr.arealight: a parallelogram light, sampled with jittered shadow rays for soft shadows.
 
-#include "mjray/core/color.h"
-#include "mjray/core/vector.h"
+#include "mjray/core/sampling.h"
+#include "mjray/light/light_sample.h"
 
 namespace mjray {
 
-/// The parallelogram corner + s·edge1 + t·edge2, s, t in [0,1], emitting `colour` in total
-/// with the falloff of a point light at each sample point.
+/// The parallelogram corner + s·edge1 + t·edge2, s, t in [0,1]: as the original, a
+/// parallelogram of point emitters that together emit `colour` (each sample point lights the
+/// receiver like a point light there, with the same falloff).
 struct AreaLight {
   Point3 corner;
   Vector3 edge1;  ///< corner1 − corner
@@ -17,10 +18,21 @@ struct AreaLight {
 
   /// The point at parameters (s, t).
   Point3 point_at(float s, float t) const { return corner + edge1 * s + edge2 * t; }
-  float attenuation(float d) const {
-    const float denominator = falloff[0] + falloff[1] * d + falloff[2] * d * d;
-    return denominator > 0 ? 1 / denominator : 0;
+  float attenuation(float d) const { return falloff_attenuation(falloff, d); }
+
+  /// -s N: an N×N jittered grid over the parallelogram.
+  int samples_per_axis(int requested) const { return requested; }
+  /// The light from the point at parameters u = (s, t) arriving at `receiver`.
+  LightSample sample_li(const Point3& receiver, Point2 u) const {
+    const Point3 p = point_at(u.u, u.v);
+    return {p, colour * attenuation(length(p - receiver))};
   }
+  /// A ray from the point at parameters u_position in a uniformly drawn direction.
+  EmittedRay sample_le(Point2 u_position, Point2 u_direction) const {
+    return {{point_at(u_position.u, u_position.v), sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
+  }
+  /// Total flux, 4π · colour (before falloff).
+  Color power() const { return isotropic_power(colour); }
 };
 
 }  // namespace mjray

@@ -1,8 +1,15 @@
 #pragma once
-/// The closed set of lights.
+/// The closed set of lights and the questions every one of them answers.
 ///
-/// To add a light: write `<name>_light.h`, add it to `Light`, teach the integrator's
-/// `direct_light` how to sample it (light_samples), and bind it in `lua/gr_bindings.cpp`.
+/// Each light is a struct in `<name>_light.h` with
+///   - `int samples_per_axis(int requested)`: how many samples along each axis of the -s
+///     grid it needs (1 for a point);
+///   - `LightSample sample_li(receiver, u)`: the point at u ∈ [0,1)² and the light from it;
+///   - `EmittedRay sample_le(u_position, u_direction)` and `Color power()`: emission, for
+///     transports that start at lights.
+/// The functions below dispatch with std::visit, so a light missing one does not compile.
+/// To add a light: write the struct, add it to `Light`, bind it in `lua/gr_bindings.cpp` or
+/// `lua/extension_bindings.cpp`, and test it in `tests/unit/light/`.
 
 #include <variant>
 
@@ -12,5 +19,18 @@
 namespace mjray {
 
 using Light = std::variant<PointLight, AreaLight>;
+
+inline int samples_per_axis(const Light& light, int requested) {
+  return std::visit([&](const auto& l) { return l.samples_per_axis(requested); }, light);
+}
+inline LightSample sample_li(const Light& light, const Point3& receiver, Point2 u) {
+  return std::visit([&](const auto& l) { return l.sample_li(receiver, u); }, light);
+}
+inline EmittedRay sample_le(const Light& light, Point2 u_position, Point2 u_direction) {
+  return std::visit([&](const auto& l) { return l.sample_le(u_position, u_direction); }, light);
+}
+inline Color power(const Light& light) {
+  return std::visit([](const auto& l) { return l.power(); }, light);
+}
 
 }  // namespace mjray

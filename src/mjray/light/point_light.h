@@ -1,22 +1,33 @@
 #pragma once
 /// gr.light: a point light with quadratic falloff.
 
-#include "mjray/core/color.h"
-#include "mjray/core/vector.h"
+#include "mjray/core/sampling.h"
+#include "mjray/light/light_sample.h"
 
 namespace mjray {
 
-/// A point light; its contribution at distance d is colour / (c0 + c1·d + c2·d²).
+/// A point light emitting equally in every direction; its contribution at distance d is
+/// colour / (c0 + c1·d + c2·d²).
 struct PointLight {
   Point3 position;
   Color colour;
   float falloff[3] = {1, 0, 0};  ///< c0, c1, c2
 
   /// The attenuation factor at distance d.
-  float attenuation(float d) const {
-    const float denominator = falloff[0] + falloff[1] * d + falloff[2] * d * d;
-    return denominator > 0 ? 1 / denominator : 0;
+  float attenuation(float d) const { return falloff_attenuation(falloff, d); }
+
+  /// A point light needs one sample, whatever the area-light sampling asks for.
+  int samples_per_axis(int /*requested*/) const { return 1; }
+  /// The light arriving at `receiver` (u is unused: there is one point to sample).
+  LightSample sample_li(const Point3& receiver, Point2 /*u*/) const {
+    return {position, colour * attenuation(length(position - receiver))};
   }
+  /// A ray in a uniformly drawn direction.
+  EmittedRay sample_le(Point2 /*u_position*/, Point2 u_direction) const {
+    return {{position, sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
+  }
+  /// Total flux, 4π · colour (before falloff).
+  Color power() const { return isotropic_power(colour); }
 };
 
 }  // namespace mjray

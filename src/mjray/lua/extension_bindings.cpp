@@ -97,7 +97,7 @@ int read_extended_obj(lua_State* L) {
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError("read_extended_obj: cannot find '" + name + "'");
   record_input(L, *path);
-  push_shared(L, std::make_shared<const ObjMesh>(load_obj(*path)), kObjDataType);
+  push_shared(L, std::make_shared<const TriangleMesh>(load_obj(*path)), kObjDataType);
   return 1;
 }
 
@@ -107,11 +107,11 @@ int gr_extendedmesh(lua_State* L) {
   const char* fn = "gr.extendedmesh";
   const std::string name = arg_string(L, 1, fn, "name");
   const bool use_uvs = lua_toboolean(L, 2);
-  auto* data = test_shared<const ObjMesh>(L, 3, kObjDataType);
+  auto* data = test_shared<const TriangleMesh>(L, 3, kObjDataType);
   if (!data) bad_argument(L, fn, 3, "mesh data", "the result of read_extended_obj('file.obj')");
-  std::shared_ptr<const ObjMesh> mesh = *data;
+  std::shared_ptr<const TriangleMesh> mesh = *data;
   if (!use_uvs && !mesh->uvs.empty()) {
-    auto copy = std::make_shared<ObjMesh>(*mesh);
+    auto copy = std::make_shared<TriangleMesh>(*mesh);
     copy->uvs.clear();
     for (auto& triangle : copy->triangles)
       for (auto& corner : triangle) corner.uv = -1;
@@ -122,7 +122,6 @@ int gr_extendedmesh(lua_State* L) {
   auto node = std::make_shared<LuaNode>();
   node->name = name;
   node->where = caller_location(L);
-  node->shape = NodeShape::kMesh;
   node->mesh = std::move(mesh);
   context(L).nodes.push_back(node);  // so that a cycle through it is broken at the end
   push_shared(L, std::move(node), kNodeType);
@@ -133,7 +132,7 @@ int gr_extendedmesh(lua_State* L) {
 
 void register_extensions(lua_State* L) {
   luaL_newmetatable(L, kObjDataType);
-  lua_pushcfunction(L, collect_shared<const ObjMesh>);
+  lua_pushcfunction(L, collect_shared<const TriangleMesh>);
   lua_setfield(L, -2, "__gc");
   lua_pushstring(L, kObjDataType);
   lua_setfield(L, -2, "__name");

@@ -28,7 +28,8 @@ namespace {
 
 // --- node constructors ---------------------------------------------------------------------
 
-int new_node(lua_State* L, const char* fn, NodeShape shape, Transform node_from_object = {}) {
+int new_node(lua_State* L, const char* fn, std::optional<Shape> shape = std::nullopt,
+             Transform node_from_object = {}) {
   auto node = std::make_shared<LuaNode>();
   node->name = arg_string(L, 1, fn, "name");
   node->where = caller_location(L);
@@ -39,10 +40,10 @@ int new_node(lua_State* L, const char* fn, NodeShape shape, Transform node_from_
   return 1;
 }
 
-int gr_node(lua_State* L) { return new_node(L, "gr.node", NodeShape::kNone); }
-int gr_joint(lua_State* L) { return new_node(L, "gr.joint", NodeShape::kNone); }
-int gr_sphere(lua_State* L) { return new_node(L, "gr.sphere", NodeShape::kSphere); }
-int gr_cube(lua_State* L) { return new_node(L, "gr.cube", NodeShape::kCube); }
+int gr_node(lua_State* L) { return new_node(L, "gr.node"); }
+int gr_joint(lua_State* L) { return new_node(L, "gr.joint"); }
+int gr_sphere(lua_State* L) { return new_node(L, "gr.sphere", UnitSphere{}); }
+int gr_cube(lua_State* L) { return new_node(L, "gr.cube", UnitCube{}); }
 
 /// A radius or edge length: zero (or a value that rounds to zero as a float) would make the
 /// shape's transform singular, and a negative one would turn it inside out.
@@ -55,20 +56,20 @@ float arg_size(lua_State* L, int index, const char* fn, const char* what) {
 int gr_nh_sphere(lua_State* L) {
   const Vector3 centre = arg_vector(L, 2, "gr.nh_sphere", "centre");
   const float radius = arg_size(L, 3, "gr.nh_sphere", "radius");
-  return new_node(L, "gr.nh_sphere", NodeShape::kSphere,
+  return new_node(L, "gr.nh_sphere", UnitSphere{},
                   Transform::translate(centre) * Transform::scale(radius, radius, radius));
 }
 
 int gr_nh_box(lua_State* L) {
   const Vector3 corner = arg_vector(L, 2, "gr.nh_box", "corner");
   const float size = arg_size(L, 3, "gr.nh_box", "size");
-  return new_node(L, "gr.nh_box", NodeShape::kCube,
+  return new_node(L, "gr.nh_box", UnitCube{},
                   Transform::translate(corner) * Transform::scale(size, size, size));
 }
 
 /// gr.mesh(name, {{x,y,z},...}, {{i,j,k,...},...}) with 0-based convex polygons.
-std::shared_ptr<const ObjMesh> table_mesh(lua_State* L, const char* fn) {
-  auto mesh = std::make_shared<ObjMesh>();
+std::shared_ptr<const TriangleMesh> table_mesh(lua_State* L, const char* fn) {
+  auto mesh = std::make_shared<TriangleMesh>();
   const auto vertex_count = lua_Integer(lua_rawlen(L, 2));
   for (lua_Integer i = 1; i <= vertex_count; ++i) {
     lua_rawgeti(L, 2, i);
@@ -104,7 +105,7 @@ std::shared_ptr<const ObjMesh> table_mesh(lua_State* L, const char* fn) {
     lua_pop(L, 1);
     // Fan-triangulate the convex polygon.
     for (size_t k = 2; k < index.size(); ++k)
-      mesh->triangles.push_back({ObjCorner{index[0]}, ObjCorner{index[k - 1]}, ObjCorner{index[k]}});
+      mesh->triangles.push_back({MeshCorner{index[0]}, MeshCorner{index[k - 1]}, MeshCorner{index[k]}});
     ++mesh->polygon_count;
   }
   if (mesh->positions.empty() || mesh->triangles.empty())
@@ -112,7 +113,7 @@ std::shared_ptr<const ObjMesh> table_mesh(lua_State* L, const char* fn) {
   return mesh;
 }
 
-std::shared_ptr<const ObjMesh> file_mesh(lua_State* L, const std::string& name, const char* fn) {
+std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::string& name, const char* fn) {
   LoaderContext& ctx = context(L);
   const auto path = resolve_input(name, ctx.script_dir);
   if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
@@ -120,7 +121,7 @@ std::shared_ptr<const ObjMesh> file_mesh(lua_State* L, const std::string& name, 
   const auto key = std::filesystem::weakly_canonical(*path);
   auto& cached = ctx.mesh_cache[key];
   try {
-    if (!cached) cached = std::make_shared<ObjMesh>(load_obj(*path));
+    if (!cached) cached = std::make_shared<TriangleMesh>(load_obj(*path));
   } catch (const SceneError& e) {
     // "OBJFILE:LINE: problem" becomes "scene.lua:LINE: gr.mesh: OBJFILE:LINE: problem".
     throw ArgumentError(std::string(fn) + ": " + e.what());
@@ -130,7 +131,7 @@ std::shared_ptr<const ObjMesh> file_mesh(lua_State* L, const std::string& name, 
 
 int gr_mesh(lua_State* L) {
   const char* fn = "gr.mesh";
-  std::shared_ptr<const ObjMesh> mesh;
+  std::shared_ptr<const TriangleMesh> mesh;
   if (lua_type(L, 2) == LUA_TSTRING) {
     mesh = file_mesh(L, lua_tostring(L, 2), fn);
   } else if (lua_type(L, 2) == LUA_TTABLE) {
@@ -140,7 +141,7 @@ int gr_mesh(lua_State* L) {
   } else {
     bad_argument(L, fn, 2, "mesh", "an OBJ file name, or a vertex table followed by a face table");
   }
-  new_node(L, fn, NodeShape::kMesh);
+  new_node(L, fn);
   (*test_shared<LuaNode>(L, -1, kNodeType))->mesh = std::move(mesh);
   return 1;
 }

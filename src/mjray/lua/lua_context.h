@@ -58,9 +58,9 @@ inline void push_string_past_cap(lua_State* L, const std::string& text) {
 struct LuaNode {
   std::string name;
   FileLocation where;
-  NodeShape shape = NodeShape::kNone;
+  std::optional<Shape> shape;  ///< with `mesh`: what the node draws (neither: a group)
   Transform node_from_object;
-  std::shared_ptr<const ObjMesh> mesh;
+  std::shared_ptr<const TriangleMesh> mesh;
   std::shared_ptr<Material> material;
   std::vector<Transform> transform_calls;  ///< in call order
   std::vector<std::shared_ptr<LuaNode>> children;
@@ -80,7 +80,7 @@ struct LoaderContext {
   SceneLoadOptions options;
   bool saw_table_mesh = false;  ///< decides the automatic transform order
   SceneDescription* description = nullptr;
-  std::map<std::filesystem::path, std::shared_ptr<const ObjMesh>> mesh_cache;
+  std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache;
   std::vector<std::weak_ptr<LuaNode>> nodes;  ///< every node made, to break cycles at the end
 
   LoaderContext() = default;

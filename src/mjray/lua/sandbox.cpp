@@ -277,7 +277,7 @@ int builtin_readobj_impl(lua_State* L) {
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError("readobj: " + not_found_message(name));
   record_input(L, *path);
-  ObjMesh mesh;
+  TriangleMesh mesh;
   try {
     mesh = load_obj(*path);
   } catch (const SceneError& e) {

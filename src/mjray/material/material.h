@@ -1,9 +1,16 @@
 #pragma once
-/// The closed set of materials.
+/// The closed set of materials and the questions every one of them answers.
 ///
-/// To add a material: write `<name>_material.h` with a struct that has a `PhongMaterial base`
-/// for the local shading, add it to `Material` below, teach the integrator's
-/// `secondary_light` about it, and bind it in `lua/gr_bindings.cpp`.
+/// Each material is a struct in `<name>_material.h` with
+///   - `LocalShading local(const SurfaceInteraction&)`: the CS 488 Phong terms at a hit (and,
+///     through LocalShading::eval/sample, the physically based BRDF they map to);
+///   - `SpecularLobes specular_lobes(const ShadingFrame&)`: the mirror, glossy and refracted
+///     directions light arrives along, with their weights;
+///   - `Color shadow_transmittance(const ShadingFrame&)`: what a shadow ray crossing the
+///     surface keeps (black: opaque).
+/// The functions below dispatch with std::visit, so a material missing one does not compile.
+/// To add a material: write the struct, add it to `Material`, bind it in
+/// `lua/extension_bindings.cpp`, and test it in `tests/unit/material/`.
 
 #include <variant>
 
@@ -18,7 +25,17 @@ namespace mjray {
 using Material =
     std::variant<PhongMaterial, ReflectiveMaterial, RefractiveMaterial, FresnelMaterial, GlossyMaterial>;
 
-/// The local (Phong) shading parameters of any material.
+inline LocalShading local_shading(const Material& m, const SurfaceInteraction& si) {
+  return std::visit([&](const auto& material) { return material.local(si); }, m);
+}
+inline SpecularLobes specular_lobes(const Material& m, const ShadingFrame& f) {
+  return std::visit([&](const auto& material) { return material.specular_lobes(f); }, m);
+}
+inline Color shadow_transmittance(const Material& m, const ShadingFrame& f) {
+  return std::visit([&](const auto& material) { return material.shadow_transmittance(f); }, m);
+}
+
+/// The Phong parameters (and texture) of any material: the struct itself or its `base`.
 inline const PhongMaterial& phong_of(const Material& m) {
   return std::visit([](const auto& alternative) -> const PhongMaterial& {
     if constexpr (std::is_same_v<std::decay_t<decltype(alternative)>, PhongMaterial>) {
@@ -33,4 +50,3 @@ inline const PhongMaterial& phong_of(const Material& m) {
 inline Material default_material() { return PhongMaterial{{0.5f, 0.5f, 0.5f}, {0, 0, 0}, 1}; }
 
 }  // namespace mjray
-

@@ -4,11 +4,14 @@
 #include <memory>
 
 #include "mjray/core/color.h"
+#include "mjray/geometry/surface_interaction.h"
+#include "mjray/material/shading.h"
 #include "mjray/texture/texture.h"
 
 namespace mjray {
 
-/// gr.material(kd, ks, shininess): the local shading model shared by every material.
+/// gr.material(kd, ks, shininess): the local shading model shared by every material. Opaque,
+/// with no specular lobes.
 struct PhongMaterial {
   Color kd;               ///< diffuse reflectance, also scales the ambient light
   Color ks;               ///< specular reflectance
@@ -20,6 +23,10 @@ struct PhongMaterial {
   Color kd_at(const Point3& object_point, const Point2& uv) const {
     return texture ? evaluate(*texture, object_point, uv) : kd;
   }
+
+  LocalShading local(const SurfaceInteraction& si) const { return {kd_at(si.object_point, si.uv), ks, shininess}; }
+  SpecularLobes specular_lobes(const ShadingFrame&) const { return {}; }
+  Color shadow_transmittance(const ShadingFrame&) const { return {}; }
 };
 
 }  // namespace mjray

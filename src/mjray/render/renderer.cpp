@@ -16,7 +16,7 @@ int resolve_thread_count(int requested) {
 }
 
 TileRender::TileRender(const PinholeCamera& camera, int width, int height,
-                       const WhittedIntegrator& integrator, const RenderSettings& settings)
+                       const Integrator& integrator, const RenderSettings& settings)
     : camera_(camera), integrator_(integrator), settings_(settings), width_(width), height_(height),
       image_(width, height), supersampled_(size_t(width) * size_t(height), 0) {
   settings_.tile_size = std::max(1, settings_.tile_size);
@@ -181,7 +181,7 @@ RenderStats TileRender::stats() const {
 }
 
 Image render_image(const PinholeCamera& camera, int width, int height,
-                   const WhittedIntegrator& integrator, const RenderSettings& settings,
+                   const Integrator& integrator, const RenderSettings& settings,
                    RenderStats* stats) {
   TileRender render(camera, width, height, integrator, settings);
   MJRAY_CHECK(render.run());

@@ -10,7 +10,7 @@
 
 #include "mjray/camera/pinhole_camera.h"
 #include "mjray/core/image.h"
-#include "mjray/integrator/whitted_integrator.h"
+#include "mjray/integrator/integrator.h"
 #include "mjray/render/render_checkpoint.h"
 
 namespace mjray {
@@ -47,7 +47,7 @@ struct RenderProgress {
 /// image. progress() and snapshot() may be called from other threads while run() works.
 class TileRender {
  public:
-  TileRender(const PinholeCamera& camera, int width, int height, const WhittedIntegrator& integrator,
+  TileRender(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
              const RenderSettings& settings);
 
   /// Continues from a checkpoint of the same scene and settings (call before run).
@@ -73,7 +73,7 @@ class TileRender {
   Color supersample(int x, int y, RayCounters& counters) const;
 
   const PinholeCamera& camera_;
-  const WhittedIntegrator& integrator_;
+  const Integrator& integrator_;
   RenderSettings settings_;
   int width_, height_, tiles_x_, tile_count_, thread_count_;
   Image image_;
@@ -96,7 +96,7 @@ class TileRender {
 
 /// Renders a whole image in one go (no interruption).
 Image render_image(const PinholeCamera& camera, int width, int height,
-                   const WhittedIntegrator& integrator, const RenderSettings& settings,
+                   const Integrator& integrator, const RenderSettings& settings,
                    RenderStats* stats = nullptr);
 
 /// The number of worker threads `requested` means on this machine (0 = all cores).

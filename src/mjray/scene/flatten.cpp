@@ -28,9 +28,8 @@ bool fits_float(const Matrix4& m) {
 
 /// What one emitted instance of a node costs: primitives plus the mesh vertices it copies.
 uint64_t own_size(const SceneNode& node) {
-  if (node.shape == NodeShape::kNone) return 0;
-  if (node.shape != NodeShape::kMesh || !node.mesh) return 1;
-  return node.mesh->triangles.size() + node.mesh->positions.size() + node.mesh->normals.size();
+  if (node.mesh) return node.mesh->triangles.size() + node.mesh->positions.size() + node.mesh->normals.size();
+  return node.shape ? 1 : 0;
 }
 
 /// The size of everything below the root, counting a node once per path to it (saturating),
@@ -80,7 +79,7 @@ class Flattener {
       stack.pop_back();
       const SceneNode& node = *next.node;
       const Transform world_from_node = next.world_from_parent * node.parent_from_node;
-      if (node.shape != NodeShape::kNone) emit(node, world_from_node);
+      if (node.mesh || node.shape) emit(node, world_from_node);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
         stack.push_back({child->get(), world_from_node});
     }
@@ -106,33 +105,39 @@ class Flattener {
     const uint32_t material = material_index(node);
     const Transform world_from_object = world_from_node * node.node_from_object;
     if (!fits_float(world_from_object.matrix()) || !fits_float(world_from_object.inverse_matrix())) overflow(node);
-    if (node.shape == NodeShape::kMesh) {
+    if (node.mesh) {
       emit_mesh(node, *node.mesh, world_from_node, material);
       return;
     }
-    world_.shapes.push_back({node.shape, world_from_object, material, node.node_from_object});
+    world_.primitives.add_shape(*node.shape, world_from_object);
+    world_.shapes.push_back({world_from_object, material, node.node_from_object});
   }
 
-  void emit_mesh(const SceneNode& node, const ObjMesh& mesh, const Transform& world_from_object, uint32_t material) {
+  void emit_mesh(const SceneNode& node, const TriangleMesh& mesh, const Transform& world_from_object,
+                 uint32_t material) {
+    PrimitiveSet& prims = world_.primitives;
     WorldMesh out;
-    out.positions.reserve(mesh.positions.size());
+    out.first_triangle = uint32_t(prims.triangles.size());
+    out.first_vertex = uint32_t(prims.vertices.size());
+    prims.vertices.reserve(prims.vertices.size() + mesh.positions.size());
     for (const Point3& p : mesh.positions) {
-      out.positions.push_back(world_from_object(p));
-      if (!is_finite(out.positions.back())) overflow(node);
+      prims.vertices.push_back(world_from_object(p));
+      if (!is_finite(prims.vertices.back())) overflow(node);
     }
     out.normals.reserve(mesh.normals.size());
     for (const Normal3& n : mesh.normals) out.normals.push_back(world_from_object(n));
     out.uvs = mesh.uvs;
-    out.triangles = mesh.triangles;
+    out.corners = mesh.triangles;
     // A mirroring transform reverses the winding; swap two corners to keep normals outward.
     if (determinant3(world_from_object.matrix()) < 0)
-      for (auto& tri : out.triangles) std::swap(tri[1], tri[2]);
+      for (auto& tri : out.corners) std::swap(tri[1], tri[2]);
     out.world_from_object = world_from_object;
     out.material = material;
 
-    const auto mesh_id = uint32_t(world_.meshes.size());
-    world_.triangles.reserve(world_.triangles.size() + out.triangles.size());
-    for (uint32_t f = 0; f < out.triangles.size(); ++f) world_.triangles.push_back({mesh_id, f});
+    prims.triangles.reserve(prims.triangles.size() + out.corners.size());
+    for (const auto& c : out.corners)
+      prims.triangles.push_back({out.first_vertex + uint32_t(c[0].position), out.first_vertex + uint32_t(c[1].position),
+                                 out.first_vertex + uint32_t(c[2].position)});
     world_.meshes.push_back(std::move(out));
   }
 

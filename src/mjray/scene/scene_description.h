@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,28 +12,23 @@
 #include "mjray/core/color.h"
 #include "mjray/core/error.h"
 #include "mjray/core/transform.h"
-#include "mjray/io/obj_loader.h"
+#include "mjray/geometry/shape.h"
+#include "mjray/geometry/triangle_mesh.h"
 #include "mjray/light/light.h"
 #include "mjray/material/material.h"
 
 namespace mjray {
-
-/// What a node draws.
-enum class NodeShape {
-  kNone,    ///< a group (gr.node, gr.joint)
-  kSphere,  ///< unit sphere placed by shape_from_object (gr.sphere, gr.nh_sphere)
-  kCube,    ///< unit cube placed by shape_from_object (gr.cube, gr.nh_box)
-  kMesh,    ///< triangle mesh (gr.mesh)
-};
 
 /// One node of the scene DAG; a node may be the child of several parents.
 struct SceneNode {
   std::string name;
   FileLocation where;            ///< where the script created it
   Transform parent_from_node;    ///< the node's own transform, composed from its calls
-  NodeShape shape = NodeShape::kNone;
-  Transform node_from_object;    ///< places the unit primitive (nh_sphere centre/radius, nh_box)
-  std::shared_ptr<const ObjMesh> mesh;          ///< for kMesh
+  /// What the node draws: a unit shape (gr.sphere, gr.cube, gr.nh_sphere, gr.nh_box), a mesh
+  /// (gr.mesh), or neither (a group: gr.node, gr.joint).
+  std::optional<Shape> shape;
+  Transform node_from_object;    ///< places the unit shape (nh_sphere centre/radius, nh_box)
+  std::shared_ptr<const TriangleMesh> mesh;
   std::shared_ptr<const Material> material;     ///< null: the default grey
   std::vector<std::shared_ptr<const SceneNode>> children;
 };

@@ -1,5 +1,5 @@
 #pragma once
-/// Test worlds, ray sets and the brute-force oracle every accelerator must agree with
+/// Test primitive sets, ray sets and the brute-force oracle every accelerator must agree with
 /// (after mitsuba3's test_kdtrees.py): real meshes from ../shared/models, transformed spheres
 /// and cubes, random rays from inside and around the scene, and camera-like ray fans.
 
@@ -20,7 +20,7 @@
 #include "mjray/accel/accelerator.h"
 #include "mjray/accel/brute_force.h"
 #include "mjray/io/obj_loader.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/primitive_set.h"
 #include "support/test_paths.h"
 
 namespace mjray::test {
@@ -31,28 +31,26 @@ struct Query {
   float t_max = kInfinity;
 };
 
-/// A world, queries over it, and what brute force answers for each.
+/// Primitives, queries over them, and what brute force answers for each.
 struct OracleCase {
-  std::unique_ptr<World> world = std::make_unique<World>();  // accelerators keep a reference
+  std::unique_ptr<PrimitiveSet> prims = std::make_unique<PrimitiveSet>();  // accelerators keep a reference
   std::vector<Query> queries;
   std::vector<std::optional<Hit>> expected;
 };
 
-/// Appends `mesh` to `world` as world-space triangles, each vertex mapped by `world_from_mesh`.
-inline void add_mesh(World& world, const ObjMesh& mesh, const Transform& world_from_mesh = {}) {
-  WorldMesh m;
-  for (const Point3& p : mesh.positions) m.positions.push_back(world_from_mesh(p));
-  m.triangles = mesh.triangles;
-  m.world_from_object = world_from_mesh;
-  const uint32_t index = uint32_t(world.meshes.size());
-  world.meshes.push_back(std::move(m));
-  for (uint32_t face = 0; face < world.meshes.back().triangles.size(); ++face)
-    world.triangles.push_back({index, face});
+/// Appends `mesh` to `prims` as world-space triangles, each vertex mapped by `world_from_mesh`.
+inline void add_mesh(PrimitiveSet& prims, const TriangleMesh& mesh, const Transform& world_from_mesh = {}) {
+  std::vector<Point3> positions;
+  for (const Point3& p : mesh.positions) positions.push_back(world_from_mesh(p));
+  std::vector<std::array<uint32_t, 3>> faces;
+  for (const auto& t : mesh.triangles)
+    faces.push_back({uint32_t(t[0].position), uint32_t(t[1].position), uint32_t(t[2].position)});
+  prims.add_triangles(positions, faces);
 }
 
 /// Appends `count` unit spheres and cubes under random rotations, non-uniform scales and
 /// translations within [-extent, extent]³.
-inline void add_random_shapes(World& world, int count, float extent, uint32_t seed) {
+inline void add_random_shapes(PrimitiveSet& prims, int count, float extent, uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> position(-extent, extent), scale(0.05f * extent, 0.3f * extent),
       angle(0, 360);
@@ -61,7 +59,7 @@ inline void add_random_shapes(World& world, int count, float extent, uint32_t se
                         Transform::rotate(int(rng() % 3), angle(rng)) *
                         Transform::rotate(int(rng() % 3), angle(rng)) *
                         Transform::scale(scale(rng), scale(rng), scale(rng));
-    world.shapes.push_back({i % 2 ? NodeShape::kCube : NodeShape::kSphere, t});
+    prims.add_shape(i % 2 ? Shape(UnitCube{}) : Shape(UnitSphere{}), t);
   }
 }
 
@@ -84,7 +82,7 @@ inline Vector3 random_direction(std::mt19937& rng) {
 /// (many inside it), random directions, and a finite t_max for a quarter of them.
 inline void add_random_queries(OracleCase& c, int count, uint32_t seed) {
   std::mt19937 rng(seed);
-  const Bounds3 b = c.world->bounds();
+  const Bounds3 b = c.prims->bounds();
   const Vector3 d = b.diagonal();
   std::uniform_real_distribution<float> unit(0, 1);
   for (int i = 0; i < count; ++i) {
@@ -97,7 +95,7 @@ inline void add_random_queries(OracleCase& c, int count, uint32_t seed) {
 
 /// Camera-like fans: from 3 eyes outside the box, a width×width grid of rays aimed across it.
 inline void add_camera_queries(OracleCase& c, int width) {
-  const Bounds3 b = c.world->bounds();
+  const Bounds3 b = c.prims->bounds();
   const Point3 centre = b.centre();
   const float size = length(b.diagonal());
   const Vector3 views[3] = {normalize(Vector3{0.3f, 0.2f, 1}), normalize(Vector3{-1, 0.5f, -0.2f}),
@@ -118,14 +116,14 @@ inline void add_camera_queries(OracleCase& c, int width) {
 
 /// Fills c.expected from brute force, on all cores (it dominates the tests' run time).
 inline void solve_with_brute_force(OracleCase& c) {
-  const BruteForce oracle(*c.world);
+  const BruteForce oracle(*c.prims);
   c.expected.assign(c.queries.size(), std::nullopt);
   const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
   std::vector<std::thread> workers;
   for (size_t w = 0; w < threads; ++w)
     workers.emplace_back([&, w] {
       for (size_t i = w; i < c.queries.size(); i += threads)
-        c.expected[i] = oracle.intersect(c.queries[i].ray, c.queries[i].t_max);
+        c.expected[i] = oracle.intersect(c.queries[i].ray, {0, c.queries[i].t_max});
     });
   for (std::thread& worker : workers) worker.join();
 }
@@ -140,7 +138,7 @@ inline const OracleCase* oracle_case(const std::string& name) {
   if (!shared) return nullptr;
   const auto models = *shared / "models";
   auto c = std::make_unique<OracleCase>();
-  World& w = *c->world;
+  PrimitiveSet& w = *c->prims;
   int random = 0, camera = 0;
   if (name == "teapot_low") {
     add_mesh(w, load_obj(models / "small/teapot_low_npm.obj"));
@@ -162,8 +160,8 @@ inline const OracleCase* oracle_case(const std::string& name) {
     random = 15000, camera = 50;
   } else if (name == "mixed") {
     // Two meshes (so vertex numbering restarts per mesh) among shapes.
-    const ObjMesh teapot = load_obj(models / "small/teapot_low_npm.obj");
-    const ObjMesh bunny = load_obj(models / "small/bunny_low_npm.obj");
+    const TriangleMesh teapot = load_obj(models / "small/teapot_low_npm.obj");
+    const TriangleMesh bunny = load_obj(models / "small/bunny_low_npm.obj");
     add_mesh(w, teapot, Transform::translate({-2, 0, 0}) * Transform::scale(0.3f, 0.3f, 0.3f));
     add_mesh(w, bunny, Transform::translate({2, 0, 0}) * Transform::rotate(1, 30) * Transform::scale(0.2f, 0.3f, 0.2f));
     add_random_shapes(w, 20, 3, 11);
@@ -218,19 +216,19 @@ inline size_t expect_agreement(const OracleCase& c, const Accelerator& accel, si
                                size_t stride = 1) {
   size_t bad = 0;
   std::vector<std::string> messages;
-  const Bounds3 scene = c.world->bounds();
+  const Bounds3 scene = c.prims->bounds();
   for (size_t i = 0; i < c.queries.size(); i += stride) {
     const Query& q = c.queries[i];
-    const auto got = accel.intersect(q.ray, q.t_max);
+    const auto got = accel.intersect(q.ray, {0, q.t_max});
     std::string problem;
     const float t_floor = coordinate_precision_t(q, scene);
     if (!same_answer(c.expected[i], got, t_floor))
       problem = "expected " + describe(c.expected[i]) + ", got " + describe(got);
-    else if (got && !same_answer(got, c.world->intersect_primitive(got->prim, q.ray, kInfinity), t_floor))
+    else if (got && !same_answer(got, c.prims->intersect(got->prim, q.ray, {}), t_floor))
       problem = "reported " + describe(got) + " but that primitive alone is hit elsewhere";
     else if (accel.occluded(q.ray, q.t_max) != got.has_value())
       problem = "occluded() disagrees with intersect() = " + describe(got);
-    else if (got && (accel.occluded(q.ray, 0.5f * got->t) || accel.intersect(q.ray, 0.5f * got->t)))
+    else if (got && (accel.occluded(q.ray, 0.5f * got->t) || accel.intersect(q.ray, {0, 0.5f * got->t})))
       problem = "something found before half the nearest hit " + describe(got);
     if (problem.empty()) continue;
     if (++bad <= 5) messages.push_back(describe(q) + ": " + problem);

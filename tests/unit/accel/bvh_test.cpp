@@ -12,6 +12,7 @@
 
 #include "mjray/accel/brute_force.h"
 #include "mjray/accel/make_accelerator.h"
+#include "mjray/geometry/primitive_set.h"
 #include "mjray/io/obj_loader.h"
 #include "support/test_paths.h"
 
@@ -20,30 +21,24 @@ namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-// A World holding one mesh whose triangles are all primitives, as flatten makes it.
-World mesh_world(const std::vector<Point3>& positions, const std::vector<std::array<int, 3>>& faces) {
-  World world;
-  WorldMesh mesh;
-  mesh.positions = positions;
-  for (const auto& f : faces) mesh.triangles.push_back({ObjCorner{f[0]}, ObjCorner{f[1]}, ObjCorner{f[2]}});
-  world.meshes.push_back(std::move(mesh));
-  for (uint32_t face = 0; face < faces.size(); ++face) world.triangles.push_back({0, face});
+// Primitives of one mesh, as flatten makes them.
+PrimitiveSet mesh_world(const std::vector<Point3>& positions, const std::vector<std::array<int, 3>>& faces) {
+  PrimitiveSet world;
+  std::vector<std::array<uint32_t, 3>> indices;
+  for (const auto& f : faces) indices.push_back({uint32_t(f[0]), uint32_t(f[1]), uint32_t(f[2])});
+  world.add_triangles(positions, indices);
   return world;
 }
 
-World obj_world(const std::filesystem::path& path) {
-  const ObjMesh obj = load_obj(path);
-  World world;
-  WorldMesh mesh;
-  mesh.positions = obj.positions;
-  mesh.triangles = obj.triangles;
-  world.meshes.push_back(std::move(mesh));
-  for (uint32_t face = 0; face < obj.triangles.size(); ++face) world.triangles.push_back({0, face});
-  return world;
+PrimitiveSet obj_world(const std::filesystem::path& path) {
+  const TriangleMesh obj = load_obj(path);
+  std::vector<std::array<int, 3>> faces;
+  for (const auto& t : obj.triangles) faces.push_back({t[0].position, t[1].position, t[2].position});
+  return mesh_world(obj.positions, faces);
 }
 
 // Spheres and cubes under rotations, non-uniform scales and translations, some overlapping.
-void add_shapes(World& world, int count, uint32_t seed) {
+void add_shapes(PrimitiveSet& world, int count, uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0, 1);
   for (int i = 0; i < count; ++i) {
@@ -52,7 +47,7 @@ void add_shapes(World& world, int count, uint32_t seed) {
         Transform::rotate(0, unit(rng) * 360) * Transform::rotate(1, unit(rng) * 360) *
         Transform::rotate(2, unit(rng) * 360) *
         Transform::scale(0.2f + unit(rng) * 1.5f, 0.2f + unit(rng) * 0.8f, 0.1f + unit(rng) * 2);
-    world.shapes.push_back({i % 2 == 0 ? NodeShape::kSphere : NodeShape::kCube, placed, 0});
+    world.add_shape(i % 2 == 0 ? Shape(UnitSphere{}) : Shape(UnitCube{}), placed);
   }
 }
 
@@ -100,7 +95,7 @@ std::vector<Ray> camera_rays(const Bounds3& bounds, int width, int height) {
 
 // Rays along ±x, ±y, ±z (other components exactly zero), some from origins on vertex
 // coordinates so that they run exactly in bounding planes.
-std::vector<Ray> axis_rays(const World& world, int count, uint32_t seed) {
+std::vector<Ray> axis_rays(const PrimitiveSet& world, int count, uint32_t seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> unit(0, 1);
   const Bounds3 b = world.bounds();
@@ -111,8 +106,8 @@ std::vector<Ray> axis_rays(const World& world, int count, uint32_t seed) {
     const int axis = i % 3;
     const bool negative = (i / 3) % 2 == 1;
     Point3 origin = lerp(outer, unit(rng), unit(rng), unit(rng));
-    if (i % 4 == 0 && !world.meshes.empty() && !world.meshes[0].positions.empty()) {
-      const auto& positions = world.meshes[0].positions;
+    if (i % 4 == 0 && !world.vertices.empty()) {
+      const auto& positions = world.vertices;
       const Point3& v = positions[size_t(unit(rng) * float(positions.size() - 1))];
       origin[(axis + 1) % 3] = v[(axis + 1) % 3];
     }
@@ -125,22 +120,22 @@ std::vector<Ray> axis_rays(const World& world, int count, uint32_t seed) {
 }
 
 // Checks the BVH against the brute-force oracle on every ray: same primitive and t, with the
-// exact barycentrics World::intersect_primitive gives, and occluded() consistent with
+// exact barycentrics PrimitiveSet::intersect_primitive gives, and occluded() consistent with
 // intersect() both unbounded and cut off before the hit. Where two primitives tie (a ray
 // through an edge they share, or coplanar faces) the watertight test's rounding decides,
 // and its outcome depends on the order of the tests: either primitive is accepted when the
 // two t agree to a few ulps and the BVH's hit is exactly what its primitive reports.
-void expect_agrees(const World& world, std::initializer_list<const Bvh*> bvhs, const std::vector<Ray>& rays,
+void expect_agrees(const PrimitiveSet& world, std::initializer_list<const Bvh*> bvhs, const std::vector<Ray>& rays,
                    const std::string& what) {
   const BruteForce oracle(world);
   int mismatches = 0;
   for (size_t i = 0; i < rays.size() && mismatches < 5; ++i) {
     const Ray& ray = rays[i];
-    const auto expected = oracle.intersect(ray, kInfinity);
+    const auto expected = oracle.intersect(ray, {});
     const float cut = expected ? expected->t * 0.5f : 1.f;
     const bool expected_cut = oracle.occluded(ray, cut);
     for (const Bvh* bvh : bvhs) {
-      const auto actual = bvh->intersect(ray, kInfinity);
+      const auto actual = bvh->intersect(ray, {});
       const std::string where = what + (bvh->uses_avx() ? " (avx)" : " (baseline)") + " ray " + std::to_string(i);
       if (expected.has_value() != actual.has_value()) {
         ADD_FAILURE() << where << ": oracle " << (expected ? "hits" : "misses") << ", bvh "
@@ -150,7 +145,7 @@ void expect_agrees(const World& world, std::initializer_list<const Bvh*> bvhs, c
       }
       EXPECT_EQ(bvh->occluded(ray, kInfinity), actual.has_value()) << where;
       EXPECT_EQ(bvh->occluded(ray, cut), expected_cut) << where;
-      EXPECT_EQ(bvh->occluded(ray, cut), bvh->intersect(ray, cut).has_value()) << where;
+      EXPECT_EQ(bvh->occluded(ray, cut), bvh->intersect(ray, {0, cut}).has_value()) << where;
       if (!expected) continue;
       EXPECT_NEAR(actual->t, expected->t, 1e-4f * expected->t) << where;
       if (expected->prim == actual->prim) {
@@ -161,7 +156,7 @@ void expect_agrees(const World& world, std::initializer_list<const Bvh*> bvhs, c
                       << expected->prim << " at t " << expected->t;
         ++mismatches;
       } else {
-        const auto own = world.intersect_primitive(actual->prim, ray, kInfinity);
+        const auto own = world.intersect(actual->prim, ray, {});
         ASSERT_TRUE(own.has_value()) << where;
         EXPECT_EQ(own->t, actual->t) << where;
         EXPECT_EQ(own->u, actual->u) << where;
@@ -172,11 +167,11 @@ void expect_agrees(const World& world, std::initializer_list<const Bvh*> bvhs, c
   EXPECT_EQ(mismatches, 0) << what;
 }
 
-void expect_agrees(const World& world, const Bvh& bvh, const std::vector<Ray>& rays, const std::string& what) {
+void expect_agrees(const PrimitiveSet& world, const Bvh& bvh, const std::vector<Ray>& rays, const std::string& what) {
   expect_agrees(world, {&bvh}, rays, what);
 }
 
-void expect_agrees_all_kinds(const World& world, int random_count, int camera_side, const std::string& what) {
+void expect_agrees_all_kinds(const PrimitiveSet& world, int random_count, int camera_side, const std::string& what) {
   // Both traversal variants where the CPU has AVX; the baseline twice otherwise.
   const Bvh best(world, 0), baseline(world, 0, BvhSimd::kBaseline);
   const Bounds3 b = world.bounds();
@@ -195,28 +190,28 @@ TEST(BvhOracle, AgreesWithBruteForceOnRealMeshes) {
 }
 
 TEST(BvhOracle, AgreesWithBruteForceOnTransformedShapes) {
-  World world;
+  PrimitiveSet world;
   add_shapes(world, 120, 3);
   expect_agrees_all_kinds(world, 16000, 100, "shapes");
 }
 
 TEST(BvhOracle, AgreesWithBruteForceOnMeshesMixedWithShapes) {
   MJRAY_REQUIRE_SHARED(shared);
-  World world = obj_world(shared / "models/small/teapot_low_npm.obj");
+  PrimitiveSet world = obj_world(shared / "models/small/teapot_low_npm.obj");
   add_shapes(world, 40, 5);
   expect_agrees_all_kinds(world, 12000, 60, "teapot+shapes");
 }
 
 TEST(BvhOracle, AgreesWithBruteForceOnALargerMesh) {
   MJRAY_REQUIRE_SHARED(shared);
-  const World world = obj_world(shared / "models/medium/dragon_vrip_res4.obj");
+  const PrimitiveSet world = obj_world(shared / "models/medium/dragon_vrip_res4.obj");
   const Bvh bvh(world, 2);
   expect_agrees(world, bvh, random_rays(world.bounds(), 1500, 13), "dragon random");
 }
 
 TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
   MJRAY_REQUIRE_SHARED(shared);
-  const World world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
+  const PrimitiveSet world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
   const Bvh serial(world, 1), parallel(world, 2);
   ASSERT_EQ(serial.nodes().size(), parallel.nodes().size());
   EXPECT_EQ(std::memcmp(serial.nodes().data(), parallel.nodes().data(),
@@ -228,7 +223,7 @@ TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
 
 TEST(BvhBuild, MemoryStaysWithinBudgetPerTriangle) {
   MJRAY_REQUIRE_SHARED(shared);
-  const World world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
+  const PrimitiveSet world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
   const Bvh bvh(world, 0);
   EXPECT_EQ(bvh.leaf_primitives().size(), world.triangles.size());
   EXPECT_LE(double(bvh.memory_bytes()) / double(world.triangles.size()), 70.0);
@@ -237,7 +232,7 @@ TEST(BvhBuild, MemoryStaysWithinBudgetPerTriangle) {
 
 TEST(BvhBuild, BoundsMatchTheWorld) {
   MJRAY_REQUIRE_SHARED(shared);
-  const World world = obj_world(shared / "models/small/bunny_low_npm.obj");
+  const PrimitiveSet world = obj_world(shared / "models/small/bunny_low_npm.obj");
   const Bvh bvh(world, 0);
   EXPECT_EQ(bvh.bounds().lo, world.bounds().lo);
   EXPECT_EQ(bvh.bounds().hi, world.bounds().hi);
@@ -245,41 +240,41 @@ TEST(BvhBuild, BoundsMatchTheWorld) {
 }
 
 TEST(BvhBuild, MakeAcceleratorBuildsTheBvh) {
-  const World world = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  const PrimitiveSet world = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
   const auto accel = make_accelerator(world, {.kind = "bvh", .threads = 1});
   EXPECT_EQ(accel->name(), "bvh");
-  EXPECT_TRUE(accel->intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, kInfinity).has_value());
+  EXPECT_TRUE(accel->intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, {}).has_value());
 }
 
 TEST(BvhEdgeCases, EmptyWorldHasNoHitsAndEmptyBounds) {
-  const World world;
+  const PrimitiveSet world;
   const Bvh bvh(world, 0);
   EXPECT_TRUE(bvh.bounds().empty());
   EXPECT_TRUE(bvh.nodes().empty());
-  EXPECT_FALSE(bvh.intersect({{0, 0, 0}, {0, 0, 1}}, kInfinity).has_value());
+  EXPECT_FALSE(bvh.intersect({{0, 0, 0}, {0, 0, 1}}, {}).has_value());
   EXPECT_FALSE(bvh.occluded({{0, 0, 0}, {0, 0, 1}}, kInfinity));
 }
 
 TEST(BvhEdgeCases, OneTriangle) {
-  const World world = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  const PrimitiveSet world = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
   const Bvh bvh(world, 0);
-  const auto hit = bvh.intersect({{0.25f, 0.5f, 2}, {0, 0, -1}}, kInfinity);
+  const auto hit = bvh.intersect({{0.25f, 0.5f, 2}, {0, 0, -1}}, {});
   ASSERT_TRUE(hit.has_value());
   EXPECT_EQ(hit->prim, 0u);
   EXPECT_FLOAT_EQ(hit->t, 2);
   EXPECT_FLOAT_EQ(hit->u, 0.25f);
   EXPECT_FLOAT_EQ(hit->v, 0.5f);
-  EXPECT_FALSE(bvh.intersect({{0.25f, 0.5f, 2}, {0, 0, -1}}, 1.5f).has_value());
-  EXPECT_FALSE(bvh.intersect({{0.75f, 0.75f, 2}, {0, 0, -1}}, kInfinity).has_value());
+  EXPECT_FALSE(bvh.intersect({{0.25f, 0.5f, 2}, {0, 0, -1}}, {0, 1.5f}).has_value());
+  EXPECT_FALSE(bvh.intersect({{0.75f, 0.75f, 2}, {0, 0, -1}}, {}).has_value());
   EXPECT_TRUE(bvh.occluded({{0.25f, 0.25f, -1}, {0, 0, 1}}, kInfinity));
   expect_agrees(world, bvh, random_rays(world.bounds(), 2000, 17), "one triangle");
 }
 
 TEST(BvhEdgeCases, OneSphere) {
-  World world;
-  world.shapes.push_back({NodeShape::kSphere, Transform::translate({1, 2, 3}) * Transform::scale(2, 1, 0.5f), 0});
+  PrimitiveSet world;
+  world.add_shape(UnitSphere{}, Transform::translate({1, 2, 3}) * Transform::scale(2, 1, 0.5f));
   const Bvh bvh(world, 0);
-  const auto hit = bvh.intersect({{1, 2, 10}, {0, 0, -1}}, kInfinity);
+  const auto hit = bvh.intersect({{1, 2, 10}, {0, 0, -1}}, {});
   ASSERT_TRUE(hit.has_value());
   EXPECT_EQ(hit->prim, 0u);
   EXPECT_NEAR(hit->t, 6.5f, 1e-5f);
@@ -290,10 +285,10 @@ TEST(BvhEdgeCases, ManyIdenticalTriangles) {
   // All centroids equal: the build must fall back to splitting by count and terminate.
   const std::vector<Point3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const std::vector<std::array<int, 3>> faces(5000, {0, 1, 2});
-  const World world = mesh_world(positions, faces);
+  const PrimitiveSet world = mesh_world(positions, faces);
   const Bvh bvh(world, 2);
   EXPECT_EQ(bvh.leaf_primitives().size(), faces.size());
-  const auto hit = bvh.intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, kInfinity);
+  const auto hit = bvh.intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, {});
   ASSERT_TRUE(hit.has_value());
   EXPECT_FLOAT_EQ(hit->t, 1);
   EXPECT_LT(hit->prim, faces.size());
@@ -314,12 +309,12 @@ TEST(BvhEdgeCases, DegenerateTrianglesNeverHitAndDoNotDisturbOthers) {
     positions.insert(positions.end(), {p, p + a, i % 3 == 0 ? p + a * 2 : (i % 3 == 1 ? p : p + b)});
     faces.push_back({base, base + 1, base + 2});
   }
-  const World world = mesh_world(positions, faces);
+  const PrimitiveSet world = mesh_world(positions, faces);
   const Bvh bvh(world, 0);
   const auto rays = random_rays(world.bounds(), 6000, 31);
   expect_agrees(world, bvh, rays, "degenerate");
   for (const Ray& ray : rays) {
-    if (const auto hit = bvh.intersect(ray, kInfinity)) {
+    if (const auto hit = bvh.intersect(ray, {})) {
       EXPECT_EQ(hit->prim % 3, 2u);
     }
   }
@@ -331,7 +326,7 @@ TEST(BvhEdgeCases, NonFiniteTrianglesAreHarmless) {
   std::vector<Point3> positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
                                    {kNaN, 0, 0}, {1, 1, 0}, {0, 1, 1},
                                    {kInfinity, 0, 0}, {1, 0, 1}, {0, 1, -1}};
-  const World world = mesh_world(positions, {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+  const PrimitiveSet world = mesh_world(positions, {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
   const Bvh bvh(world, 0);
   EXPECT_EQ(bvh.leaf_primitives().size(), 2u);
   expect_agrees(world, bvh, random_rays({{-1, -1, -1}, {2, 2, 2}}, 2000, 37), "non-finite");
@@ -339,7 +334,7 @@ TEST(BvhEdgeCases, NonFiniteTrianglesAreHarmless) {
 
 TEST(BvhEdgeCases, NanAndInfiniteRaysMissWithoutCrashing) {
   MJRAY_REQUIRE_SHARED(shared);
-  World world = obj_world(shared / "models/small/teapot_low_npm.obj");
+  PrimitiveSet world = obj_world(shared / "models/small/teapot_low_npm.obj");
   add_shapes(world, 10, 41);
   const Bvh best(world, 0), baseline(world, 0, BvhSimd::kBaseline);
   const Point3 c = world.bounds().centre();
@@ -354,13 +349,13 @@ TEST(BvhEdgeCases, NanAndInfiniteRaysMissWithoutCrashing) {
   const Ray tiny{good.origin, {0, 1e-32f, -1e-30f}};
   for (const Bvh* bvh : {&best, &baseline}) {
     for (const Ray& ray : rays) {
-      EXPECT_FALSE(bvh->intersect(ray, kInfinity).has_value());
+      EXPECT_FALSE(bvh->intersect(ray, {}).has_value());
       EXPECT_FALSE(bvh->occluded(ray, kInfinity));
     }
-    EXPECT_TRUE(bvh->intersect(tiny, kInfinity).has_value());
-    EXPECT_FALSE(bvh->intersect(good, kNaN).has_value());
-    EXPECT_FALSE(bvh->intersect(good, 0).has_value());
-    EXPECT_FALSE(bvh->intersect(good, -1).has_value());
+    EXPECT_TRUE(bvh->intersect(tiny, {}).has_value());
+    EXPECT_FALSE(bvh->intersect(good, {0, kNaN}).has_value());
+    EXPECT_FALSE(bvh->intersect(good, {0, 0}).has_value());
+    EXPECT_FALSE(bvh->intersect(good, {0, -1}).has_value());
   }
   expect_agrees(world, {&best, &baseline}, {tiny, {good.origin, {0, 0, -1e-30f}}, good}, "tiny direction");
 }
@@ -368,7 +363,7 @@ TEST(BvhEdgeCases, NanAndInfiniteRaysMissWithoutCrashing) {
 TEST(BvhEdgeCases, RaysFromInsideAClosedMeshAlwaysHit) {
   // A watertight cube of 12 triangles: rays from inside, including through edges and
   // corners, must hit.
-  const World world = mesh_world(
+  const PrimitiveSet world = mesh_world(
       {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
       {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
        {3, 6, 2}, {3, 7, 6}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}});
@@ -380,7 +375,7 @@ TEST(BvhEdgeCases, RaysFromInsideAClosedMeshAlwaysHit) {
     const Point3 target = i % 2 ? Point3(float(i % 3 == 0), float(i % 5 < 2), signed_unit(rng) > 0)
                                 : Point3(unit(rng), 1, unit(rng));
     const Ray ray{origin, target - origin};
-    EXPECT_TRUE(bvh.intersect(ray, kInfinity).has_value()) << i;
+    EXPECT_TRUE(bvh.intersect(ray, {}).has_value()) << i;
     EXPECT_TRUE(bvh.occluded(ray, kInfinity)) << i;
   }
   expect_agrees(world, bvh, axis_rays(world, 2000, 47), "cube");

@@ -24,24 +24,24 @@ namespace {
 using test::OracleCase;
 using test::Query;
 
-ObjMesh one_triangle(const Point3& p0, const Point3& p1, const Point3& p2) {
-  ObjMesh m;
+TriangleMesh one_triangle(const Point3& p0, const Point3& p1, const Point3& p2) {
+  TriangleMesh m;
   m.positions = {p0, p1, p2};
-  m.triangles = {{ObjCorner{0}, ObjCorner{1}, ObjCorner{2}}};
+  m.triangles = {{MeshCorner{0}, MeshCorner{1}, MeshCorner{2}}};
   return m;
 }
 
 void expect_embree_agrees(const std::string& name) {
   const OracleCase* c = test::oracle_case(name);
   if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";
-  const EmbreeAccelerator embree(*c->world);
+  const EmbreeAccelerator embree(*c->prims);
   test::expect_agreement(*c, embree);
   // Embree's (u, v) must be mjray's (b1, b2) wherever both name the same triangle.
   size_t bad_uv = 0;
   for (size_t i = 0; i < c->queries.size(); ++i) {
     const auto& want = c->expected[i];
-    if (!want || !c->world->is_triangle(want->prim)) continue;
-    const auto got = embree.intersect(c->queries[i].ray, c->queries[i].t_max);
+    if (!want || !c->prims->is_triangle(want->prim)) continue;
+    const auto got = embree.intersect(c->queries[i].ray, {0, c->queries[i].t_max});
     if (got && got->prim == want->prim)
       bad_uv += std::abs(got->u - want->u) > 1e-3f || std::abs(got->v - want->v) > 1e-3f;
   }
@@ -57,14 +57,14 @@ TEST(EmbreeAgreement, TransformedSpheresAndCubes) { expect_embree_agrees("shapes
 TEST(EmbreeAgreement, MeshesAmongShapes) { expect_embree_agrees("mixed"); }
 
 TEST(EmbreeAdapter, BarycentricsAreMjrays) {
-  World world;
+  PrimitiveSet world;
   test::add_mesh(world, one_triangle({1, 0, 0}, {3, 1, 0}, {1, 4, 1}));
   const EmbreeAccelerator embree(world);
   const Point3 p0{1, 0, 0}, p1{3, 1, 0}, p2{1, 4, 1};
   for (const auto& [b1, b2] : {std::pair{0.2f, 0.3f}, std::pair{0.7f, 0.1f}, std::pair{0.05f, 0.9f}}) {
     const Point3 target = p0 + (p1 - p0) * b1 + (p2 - p0) * b2;
     const Ray ray{{2, 1, -5}, target - Point3{2, 1, -5}};
-    const auto hit = embree.intersect(ray, kInfinity);
+    const auto hit = embree.intersect(ray, {});
     ASSERT_TRUE(hit);
     EXPECT_EQ(hit->prim, 0u);
     EXPECT_NEAR(hit->t, 1, 1e-5);
@@ -74,16 +74,16 @@ TEST(EmbreeAdapter, BarycentricsAreMjrays) {
 }
 
 TEST(EmbreeAdapter, ShapeIdsFollowTriangles) {
-  World world;
+  PrimitiveSet world;
   test::add_mesh(world, one_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-  world.shapes.push_back({NodeShape::kSphere, Transform::translate({0, 0, 5})});
-  world.shapes.push_back({NodeShape::kCube, Transform::translate({0, 0, 10})});
+  world.add_shape(UnitSphere{}, Transform::translate({0, 0, 5}));
+  world.add_shape(UnitCube{}, Transform::translate({0, 0, 10}));
   const EmbreeAccelerator embree(world);
-  const auto sphere = embree.intersect({{0, 0, 2}, {0, 0, 1}}, kInfinity);
+  const auto sphere = embree.intersect({{0, 0, 2}, {0, 0, 1}}, {});
   ASSERT_TRUE(sphere);
   EXPECT_EQ(sphere->prim, 1u);
   EXPECT_NEAR(sphere->t, 2, 1e-5);
-  const auto cube = embree.intersect({{0.5f, 0.5f, 7}, {0, 0, 1}}, kInfinity);
+  const auto cube = embree.intersect({{0.5f, 0.5f, 7}, {0, 0, 1}}, {});
   ASSERT_TRUE(cube);
   EXPECT_EQ(cube->prim, 2u);
   EXPECT_NEAR(cube->t, 3, 1e-5);
@@ -92,17 +92,17 @@ TEST(EmbreeAdapter, ShapeIdsFollowTriangles) {
 }
 
 TEST(EmbreeAdapter, OriginOnTheSurfaceIsNotAHitAtZero) {
-  World world;
+  PrimitiveSet world;
   test::add_mesh(world, one_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
-  world.shapes.push_back({NodeShape::kCube, Transform::translate({0, 0, 1})});
+  world.add_shape(UnitCube{}, Transform::translate({0, 0, 1}));
   const EmbreeAccelerator embree(world);
   const BruteForce oracle(world);
   const std::vector<Ray> rays = {{{0.25f, 0.25f, 0}, {0, 0, -1}}, {{0.25f, 0.25f, 0}, {0, 0, 1}},
                                  {{0, 0, 0}, {1, 1, 1}},          {{0.5f, 0.5f, 1}, {0, 0, -1}},
                                  {{0.5f, 0.5f, 1}, {0, 0, 1}}};
   for (const Ray& ray : rays) {
-    const auto want = oracle.intersect(ray, kInfinity);
-    const auto got = embree.intersect(ray, kInfinity);
+    const auto want = oracle.intersect(ray, {});
+    const auto got = embree.intersect(ray, {});
     ASSERT_EQ(want.has_value(), got.has_value());
     if (want) {
       EXPECT_GT(got->t, 0);
@@ -113,15 +113,15 @@ TEST(EmbreeAdapter, OriginOnTheSurfaceIsNotAHitAtZero) {
 }
 
 TEST(EmbreeAdapter, EmptyWorld) {
-  const World world;
+  const PrimitiveSet world;
   const EmbreeAccelerator embree(world);
   EXPECT_TRUE(embree.bounds().empty());
-  EXPECT_FALSE(embree.intersect({{0, 0, -5}, {0, 0, 1}}, kInfinity));
+  EXPECT_FALSE(embree.intersect({{0, 0, -5}, {0, 0, 1}}, {}));
   EXPECT_FALSE(embree.occluded({{0, 0, -5}, {0, 0, 1}}, kInfinity));
 }
 
 TEST(EmbreeAdapter, NonFiniteRaysMiss) {
-  World world;
+  PrimitiveSet world;
   test::add_mesh(world, one_triangle({-10, -10, 0}, {10, -10, 0}, {0, 10, 0}));
   test::add_random_shapes(world, 10, 5, 3);
   const EmbreeAccelerator embree(world);
@@ -131,13 +131,13 @@ TEST(EmbreeAdapter, NonFiniteRaysMiss) {
       {{{0, 0, -5}, {inf, 0, 1}}},   {{{0, 0, -5}, {0, 0, 0}}},   {{{0, 0, -5}, {0, 0, 1}}, nan},
       {{{0, 0, -5}, {0, 0, 1}}, 0},  {{{0, 0, -5}, {0, 0, 1}}, -1}};
   for (const Query& q : queries) {
-    EXPECT_FALSE(embree.intersect(q.ray, q.t_max)) << test::describe(q);
+    EXPECT_FALSE(embree.intersect(q.ray, {0, q.t_max})) << test::describe(q);
     EXPECT_FALSE(embree.occluded(q.ray, q.t_max)) << test::describe(q);
   }
 }
 
 TEST(EmbreeAdapter, CountsItsMemoryAndIsMadeByName) {
-  World world;
+  PrimitiveSet world;
   test::add_mesh(world, test::uv_sphere(32, 64));
   const auto accel = make_accelerator(world, {.kind = "embree"});
   EXPECT_EQ(accel->name(), "embree");
@@ -150,7 +150,7 @@ TEST(EmbreeAdapter, CountsItsMemoryAndIsMadeByName) {
 #else  // no Embree in this build
 
 TEST(EmbreeAdapter, UnavailableBuildExplainsItself) {
-  const World world;
+  const PrimitiveSet world;
   EXPECT_EQ(accelerator_names().find("embree"), std::string::npos);
   try {
     make_accelerator(world, {.kind = "embree"});

@@ -28,7 +28,7 @@ void expect_grids_agree(const std::string& name) {
   if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";
   for (const int size : kSizes) {
     SCOPED_TRACE("grid size " + std::to_string(size));
-    const UniformGrid grid(*c->world, size);
+    const UniformGrid grid(*c->prims, size);
     // 1³ and 2³ grids test nearly every primitive per ray: a quarter of the rays will do.
     expect_agreement(*c, grid, 0, size == 1 || size == 2 ? 4 : 1);
   }
@@ -43,12 +43,12 @@ TEST(GridAgreement, TransformedSpheresAndCubes) { expect_grids_agree("shapes"); 
 TEST(GridAgreement, MeshesAmongShapes) { expect_grids_agree("mixed"); }
 
 // A mesh of one triangle per entry of `corners`.
-ObjMesh triangle_soup(const std::vector<std::array<Point3, 3>>& corners) {
-  ObjMesh m;
+TriangleMesh triangle_soup(const std::vector<std::array<Point3, 3>>& corners) {
+  TriangleMesh m;
   for (const auto& tri : corners) {
     const int32_t base = int32_t(m.positions.size());
     m.positions.insert(m.positions.end(), tri.begin(), tri.end());
-    m.triangles.push_back({ObjCorner{base}, ObjCorner{base + 1}, ObjCorner{base + 2}});
+    m.triangles.push_back({MeshCorner{base}, MeshCorner{base + 1}, MeshCorner{base + 2}});
   }
   return m;
 }
@@ -67,9 +67,9 @@ std::vector<std::array<Point3, 3>> random_triangles(int count, float size, uint3
 }
 
 // Random queries over `world`, solved by brute force.
-OracleCase random_case(std::unique_ptr<World> world, int rays, uint32_t seed) {
+OracleCase random_case(std::unique_ptr<PrimitiveSet> world, int rays, uint32_t seed) {
   OracleCase c;
-  c.world = std::move(world);
+  c.prims = std::move(world);
   test::add_random_queries(c, rays, seed);
   test::add_camera_queries(c, 20);
   test::solve_with_brute_force(c);
@@ -84,7 +84,7 @@ TEST(GridBuild, OptimalResolutionIsThreeCubeRoots) {
 }
 
 TEST(GridBuild, ResolutionIsClampedAndCapped) {
-  World world;
+  PrimitiveSet world;
   add_mesh(world, triangle_soup(random_triangles(1000, 1, 1)));
   EXPECT_EQ(UniformGrid(world, 0).resolution(), 30);
   EXPECT_EQ(UniformGrid(world, 5).resolution(), 5);
@@ -93,11 +93,11 @@ TEST(GridBuild, ResolutionIsClampedAndCapped) {
 }
 
 TEST(GridBuild, HugeShapesInAFineGridStayWithinTheMemoryBudget) {
-  World world;
+  PrimitiveSet world;
   for (int i = 0; i < 4; ++i)
-    world.shapes.push_back({NodeShape::kSphere, Transform::translate({0.01f * i, 0, 0}) * Transform::scale(5, 5, 5)});
-  OracleCase c = random_case(std::make_unique<World>(world), 2000, 3);
-  const UniformGrid grid(*c.world, 256);
+    world.add_shape(UnitSphere{}, Transform::translate({0.01f * i, 0, 0}) * Transform::scale(5, 5, 5));
+  OracleCase c = random_case(std::make_unique<PrimitiveSet>(world), 2000, 3);
+  const UniformGrid grid(*c.prims, 256);
   EXPECT_LT(grid.resolution(), 256);
   EXPECT_LE(grid.reference_count(), size_t(1) << 24);
   EXPECT_LT(grid.memory_bytes(), size_t(200) << 20);
@@ -106,17 +106,17 @@ TEST(GridBuild, HugeShapesInAFineGridStayWithinTheMemoryBudget) {
 
 TEST(GridBuild, ThinDiagonalTriangleIsListedOnlyWhereItPasses) {
   // A long sliver along the main diagonal: its AABB covers the whole grid.
-  auto world = std::make_unique<World>();
+  auto world = std::make_unique<PrimitiveSet>();
   add_mesh(*world, triangle_soup({{Point3{0, 0, 0}, Point3{10, 10, 10}, Point3{10, 10.1f, 10}}}));
   OracleCase c = random_case(std::move(world), 3000, 4);
-  const UniformGrid grid(*c.world, 32);
+  const UniformGrid grid(*c.prims, 32);
   EXPECT_GE(grid.reference_count(), 32u);
   EXPECT_LT(grid.reference_count(), 32u * 32 * 2);  // a thin band, not 32³
   expect_agreement(c, grid);
 }
 
 TEST(GridBuild, MakeAcceleratorBuildsTheRequestedGrid) {
-  World world;
+  PrimitiveSet world;
   add_mesh(world, triangle_soup(random_triangles(1000, 1, 2)));
   const auto sized = make_accelerator(world, {.kind = "grid", .grid_size = 7});
   EXPECT_EQ(sized->name(), "grid");
@@ -129,34 +129,34 @@ TEST(GridBuild, MakeAcceleratorBuildsTheRequestedGrid) {
 }
 
 TEST(GridEdgeCases, EmptyWorld) {
-  const World world;
+  const PrimitiveSet world;
   for (const int size : kSizes) {
     const UniformGrid grid(world, size);
     EXPECT_TRUE(grid.bounds().empty());
     const Ray ray{{0, 0, -5}, {0, 0, 1}};
-    EXPECT_FALSE(grid.intersect(ray, kInfinity));
+    EXPECT_FALSE(grid.intersect(ray, {}));
     EXPECT_FALSE(grid.occluded(ray, kInfinity));
   }
 }
 
 TEST(GridEdgeCases, OnePrimitive) {
   // A lone triangle gives a flat grid box; a lone sphere a cubic one.
-  auto triangle = std::make_unique<World>();
+  auto triangle = std::make_unique<PrimitiveSet>();
   add_mesh(*triangle, triangle_soup({{Point3{0, 0, 0}, Point3{1, 0, 0}, Point3{0, 1, 0}}}));
-  auto sphere = std::make_unique<World>();
-  sphere->shapes.push_back({NodeShape::kSphere, Transform::translate({1, 2, 3}) * Transform::scale(1, 2, 0.5f)});
+  auto sphere = std::make_unique<PrimitiveSet>();
+  sphere->add_shape(UnitSphere{}, Transform::translate({1, 2, 3}) * Transform::scale(1, 2, 0.5f));
   for (auto* world : {&triangle, &sphere}) {
     OracleCase c = random_case(std::move(*world), 3000, 5);
     for (const int size : kSizes) {
       SCOPED_TRACE("grid size " + std::to_string(size));
-      expect_agreement(c, UniformGrid(*c.world, size));
+      expect_agreement(c, UniformGrid(*c.prims, size));
     }
   }
 }
 
 TEST(GridEdgeCases, AllPrimitivesInOneVoxel) {
   // A tight cluster plus one far triangle that stretches the grid: the cluster shares a voxel.
-  auto world = std::make_unique<World>();
+  auto world = std::make_unique<PrimitiveSet>();
   std::vector<std::array<Point3, 3>> tris;
   for (const auto& t : random_triangles(200, 0.01f, 6))
     tris.push_back({Point3{t[0].x * 0.001f, t[0].y * 0.001f, t[0].z * 0.001f},
@@ -175,15 +175,15 @@ TEST(GridEdgeCases, AllPrimitivesInOneVoxel) {
   test::solve_with_brute_force(c);
   for (const int size : kSizes) {
     SCOPED_TRACE("grid size " + std::to_string(size));
-    expect_agreement(c, UniformGrid(*c.world, size));
+    expect_agreement(c, UniformGrid(*c.prims, size));
   }
 }
 
 TEST(GridEdgeCases, RaysFromInsideAClosedMeshAlwaysHit) {
-  World world;
+  PrimitiveSet world;
   add_mesh(world, test::uv_sphere(16, 32), Transform::scale(3, 2, 1));
   OracleCase c;
-  c.world = std::make_unique<World>(world);
+  c.prims = std::make_unique<PrimitiveSet>(world);
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> inside(-0.5f, 0.5f);
   for (int i = 0; i < 3000; ++i)
@@ -191,20 +191,20 @@ TEST(GridEdgeCases, RaysFromInsideAClosedMeshAlwaysHit) {
   test::solve_with_brute_force(c);
   for (const int size : kSizes) {
     SCOPED_TRACE("grid size " + std::to_string(size));
-    const UniformGrid grid(*c.world, size);
+    const UniformGrid grid(*c.prims, size);
     expect_agreement(c, grid);
     int misses = 0;
-    for (const Query& q : c.queries) misses += !grid.intersect(q.ray, q.t_max);
+    for (const Query& q : c.queries) misses += !grid.intersect(q.ray, {0, q.t_max});
     EXPECT_EQ(misses, 0);
   }
 }
 
 TEST(GridEdgeCases, AxisParallelRays) {
-  auto world = std::make_unique<World>();
+  auto world = std::make_unique<PrimitiveSet>();
   add_mesh(*world, triangle_soup(random_triangles(500, 1.5f, 10)));
   test::add_random_shapes(*world, 10, 5, 11);
   OracleCase c;
-  c.world = std::move(world);
+  c.prims = std::move(world);
   std::mt19937 rng(12);
   std::uniform_real_distribution<float> where(-2, 12);
   for (int i = 0; i < 6000; ++i) {
@@ -215,7 +215,7 @@ TEST(GridEdgeCases, AxisParallelRays) {
   test::solve_with_brute_force(c);
   for (const int size : kSizes) {
     SCOPED_TRACE("grid size " + std::to_string(size));
-    expect_agreement(c, UniformGrid(*c.world, size));
+    expect_agreement(c, UniformGrid(*c.prims, size));
   }
 }
 
@@ -224,7 +224,7 @@ TEST(GridEdgeCases, RaysAlongVoxelBoundariesAndGeometryOnThem) {
     SCOPED_TRACE("grid size " + std::to_string(size));
     // Find the voxel planes of a triangle soup...
     auto tris = random_triangles(300, 2, 13);
-    World probe;
+    PrimitiveSet probe;
     add_mesh(probe, triangle_soup(tris));
     const Bounds3 box = UniformGrid(probe, size).grid_bounds();
     std::vector<float> planes[3];
@@ -243,10 +243,10 @@ TEST(GridEdgeCases, RaysAlongVoxelBoundariesAndGeometryOnThem) {
         tris.push_back({p0, p2, p3});
       }
     OracleCase c;
-    c.world = std::make_unique<World>();
-    add_mesh(*c.world, triangle_soup(tris));
-    ASSERT_EQ(UniformGrid(*c.world, size).grid_bounds().lo, box.lo);
-    ASSERT_EQ(UniformGrid(*c.world, size).grid_bounds().hi, box.hi);
+    c.prims = std::make_unique<PrimitiveSet>();
+    add_mesh(*c.prims, triangle_soup(tris));
+    ASSERT_EQ(UniformGrid(*c.prims, size).grid_bounds().lo, box.lo);
+    ASSERT_EQ(UniformGrid(*c.prims, size).grid_bounds().hi, box.hi);
 
     // Rays along voxel edges (two coordinates on planes), within voxel faces (one coordinate
     // on a plane, direction in it), and through voxel corners.
@@ -281,7 +281,7 @@ TEST(GridEdgeCases, RaysAlongVoxelBoundariesAndGeometryOnThem) {
       c.queries.push_back({{o, d}});
     }
     test::solve_with_brute_force(c);
-    expect_agreement(c, UniformGrid(*c.world, size));
+    expect_agreement(c, UniformGrid(*c.prims, size));
   }
 }
 
@@ -295,17 +295,17 @@ TEST(GridEdgeCases, DegenerateTriangles) {
     tris.push_back({p, q, p + (q - p) * 0.25f});  // collinear
     tris.push_back({p, p, p});                    // a point
   }
-  auto world = std::make_unique<World>();
+  auto world = std::make_unique<PrimitiveSet>();
   add_mesh(*world, triangle_soup(tris));
   OracleCase c = random_case(std::move(world), 4000, 17);
   for (const int size : kSizes) {
     SCOPED_TRACE("grid size " + std::to_string(size));
-    expect_agreement(c, UniformGrid(*c.world, size));
+    expect_agreement(c, UniformGrid(*c.prims, size));
   }
 }
 
 TEST(GridEdgeCases, NonFiniteRaysMissWithoutHanging) {
-  World world;
+  PrimitiveSet world;
   add_mesh(world, triangle_soup(random_triangles(300, 2, 18)));
   test::add_random_shapes(world, 10, 5, 19);
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
@@ -322,7 +322,7 @@ TEST(GridEdgeCases, NonFiniteRaysMissWithoutHanging) {
     const UniformGrid grid(world, size);
     for (size_t i = 0; i < queries.size(); ++i) {
       SCOPED_TRACE("grid size " + std::to_string(size) + ", query " + std::to_string(i));
-      const auto hit = grid.intersect(queries[i].ray, queries[i].t_max);
+      const auto hit = grid.intersect(queries[i].ray, {0, queries[i].t_max});
       EXPECT_EQ(grid.occluded(queries[i].ray, queries[i].t_max), hit.has_value());
       if (i < 10) {
         EXPECT_FALSE(hit);  // the others are finite, if extreme

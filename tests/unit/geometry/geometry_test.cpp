@@ -11,7 +11,7 @@
 #include "mjray/geometry/box.h"
 #include "mjray/geometry/sphere.h"
 #include "mjray/geometry/triangle.h"
-#include "mjray/integrator/spawn_ray.h"
+#include "mjray/geometry/spawn_ray.h"
 #include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
 
@@ -32,40 +32,40 @@ World world_of(std::shared_ptr<const SceneNode> root) {
 }
 
 TEST(Geometry, UnitSphereHitsAtClosedFormDistance) {
-  const auto t = intersect_unit_sphere({{0, 0, 5}, {0, 0, -1}}, kInfinity);
+  const auto t = intersect_unit_sphere({{0, 0, 5}, {0, 0, -1}}, {});
   ASSERT_TRUE(t);
   EXPECT_FLOAT_EQ(*t, 4);
-  const auto inside = intersect_unit_sphere({{0, 0, 0}, {0, 0, -2}}, kInfinity);
+  const auto inside = intersect_unit_sphere({{0, 0, 0}, {0, 0, -2}}, {});
   ASSERT_TRUE(inside);
   EXPECT_FLOAT_EQ(*inside, 0.5f);  // t measured in units of the unnormalised direction
-  EXPECT_FALSE(intersect_unit_sphere({{0, 0, 5}, {0, 0, -1}}, 3.9f));
-  EXPECT_FALSE(intersect_unit_sphere({{0, 2, 5}, {0, 0, -1}}, kInfinity));
+  EXPECT_FALSE(intersect_unit_sphere({{0, 0, 5}, {0, 0, -1}}, {0, 3.9f}));
+  EXPECT_FALSE(intersect_unit_sphere({{0, 2, 5}, {0, 0, -1}}, {}));
 }
 
 TEST(Geometry, UnitCubeHitsEntryFromOutsideAndExitFromInside) {
-  const auto outside = intersect_unit_cube({{0.5f, 0.5f, 3}, {0, 0, -1}}, kInfinity);
+  const auto outside = intersect_unit_cube({{0.5f, 0.5f, 3}, {0, 0, -1}}, {});
   ASSERT_TRUE(outside);
   EXPECT_FLOAT_EQ(*outside, 2);
-  const auto inside = intersect_unit_cube({{0.5f, 0.5f, 0.5f}, {1, 0, 0}}, kInfinity);
+  const auto inside = intersect_unit_cube({{0.5f, 0.5f, 0.5f}, {1, 0, 0}}, {});
   ASSERT_TRUE(inside);
   EXPECT_FLOAT_EQ(*inside, 0.5f);
   EXPECT_EQ(unit_cube_face({1, 0.5f, 0.2f}).axis, 0);
   EXPECT_EQ(unit_cube_face({1, 0.5f, 0.2f}).side, 1);
   // Axis-parallel ray grazing outside the slab misses.
-  EXPECT_FALSE(intersect_unit_cube({{1.5f, 0.5f, 3}, {0, 0, -1}}, kInfinity));
+  EXPECT_FALSE(intersect_unit_cube({{1.5f, 0.5f, 3}, {0, 0, -1}}, {}));
 }
 
 TEST(Geometry, RaysFromInsideClosedMeshAlwaysHit) {
   const World world = world_of(test::mesh(test::uv_sphere(24, 48), default_material(),
                                           Transform::translate({3, -2, 7}) * Transform::scale(2, 1, 3)));
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(0, 0.9f);
   for (int i = 0; i < 20000; ++i) {
     // A point inside the ellipsoid (the polygonal sphere holds the sphere of radius 0.99).
     const Vector3 offset = random_direction(rng) * u(rng);
     const Point3 inside(3 + 2 * offset.x, -2 + offset.y, 7 + 3 * offset.z);
-    ASSERT_TRUE(accel.intersect({inside, random_direction(rng)}, kInfinity)) << "ray " << i;
+    ASSERT_TRUE(accel.intersect({inside, random_direction(rng)}, {})) << "ray " << i;
   }
 }
 
@@ -76,7 +76,7 @@ TEST(Geometry, SpawnedRaysNeverReHitTheirSurface) {
       {test::sphere({0, 0, 0}, 3), test::box({5, -2, -2}, {9, 2, 2}),
        test::mesh(test::uv_sphere(16, 32), default_material(), Transform::translate({-8, 0, 0}) * Transform::scale(3, 3, 3))},
       far));
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   std::mt19937 rng(11);
   const Point3 centre = far(Point3(0, 0, 0));
   int spawned = 0;
@@ -84,13 +84,13 @@ TEST(Geometry, SpawnedRaysNeverReHitTheirSurface) {
     const Point3 origin = centre + random_direction(rng) * 40.f;
     const Point3 target = far(Point3(std::uniform_real_distribution<float>(-10, 10)(rng), 0, 0));
     const Ray aimed{origin, normalize(target - origin)};
-    const auto hit = accel.intersect(aimed, kInfinity);
+    const auto hit = accel.intersect(aimed, {});
     if (!hit) continue;
     const SurfaceInteraction si = world.interaction(aimed, *hit);
     // Leave on the side the ray came from, in a random direction of that hemisphere.
     Vector3 d = random_direction(rng);
     if (dot(d, si.geometric_normal) * dot(aimed.direction, si.geometric_normal) > 0) d = -d;
-    const auto again = accel.intersect(spawn_ray(si, d), kInfinity);
+    const auto again = accel.intersect(spawn_ray(si, d), {});
     if (again) {
       EXPECT_NE(again->prim, hit->prim) << "re-hit at t=" << again->t;
     }
@@ -120,7 +120,7 @@ TEST(Geometry, TrianglesAreWatertightOnSharedEdgesAndVertices) {
         const Ray ray{origin, target - origin};
         bool hit = false;
         for (int j = 0; j < 8 && !hit; ++j)
-          hit = intersect_triangle(ray, kInfinity, centre, ring[size_t(j)], ring[size_t((j + 1) % 8)]).has_value();
+          hit = intersect_triangle(ray, {}, centre, ring[size_t(j)], ring[size_t((j + 1) % 8)]).has_value();
         ASSERT_TRUE(hit) << "edge " << i << " at " << s;
         ++rays;
       }
@@ -133,11 +133,11 @@ TEST(Geometry, NanAndInfRaysReturnNoHit) {
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
   const World world = world_of(test::group({test::sphere({0, 0, 0}, 1), test::box({2, 0, 0}, {3, 1, 1}),
                                             test::mesh(test::floor_quad(5))}));
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const Ray bad[] = {{{nan, 0, 5}, {0, 0, -1}}, {{0, 0, 5}, {nan, nan, nan}}, {{0, 0, 5}, {0, 0, 0}},
                      {{inf, 0, 5}, {0, 0, -1}}, {{0, 0, 5}, {inf, 0, -inf}}, {{-inf, -inf, -inf}, {1, 1, 1}}};
   for (const Ray& ray : bad) {
-    EXPECT_FALSE(accel.intersect(ray, kInfinity));
+    EXPECT_FALSE(accel.intersect(ray, {}));
     EXPECT_FALSE(accel.occluded(ray, kInfinity));
   }
 }

@@ -11,11 +11,11 @@ namespace {
 
 /// One triangle with distinct vertex normals and UVs, placed by a transform.
 World triangle_world(const Transform& placement) {
-  ObjMesh m;
+  TriangleMesh m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   m.normals = {normalize(Normal3(0, 0, 1)), normalize(Normal3(1, 0, 1)), normalize(Normal3(0, 1, 1))};
   m.uvs = {{0.1f, 0.2f}, {0.9f, 0.3f}, {0.4f, 0.8f}};
-  m.triangles = {{ObjCorner{0, 0, 0}, ObjCorner{1, 1, 1}, ObjCorner{2, 2, 2}}};
+  m.triangles = {{MeshCorner{0, 0, 0}, MeshCorner{1, 1, 1}, MeshCorner{2, 2, 2}}};
   RenderJob job;
   job.root = test::mesh(m, default_material(), placement);
   return flatten(job);

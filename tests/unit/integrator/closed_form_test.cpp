@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/brute_force.h"
 #include "mjray/camera/pinhole_camera.h"
 #include "mjray/render/renderer.h"
@@ -17,7 +18,7 @@ namespace {
 /// Renders a job with brute force, as the oracle renderer.
 Image render_job(const RenderJob& job) {
   const World world = flatten(job);
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, {});
   return render_image(PinholeCamera(job.camera, job.width, job.height), job.width, job.height, integrator, {});
 }
@@ -143,7 +144,7 @@ TEST(ClosedForm, ImageIsIdenticalForAnyThreadCountAndTileSize) {
   job.ambient = {0.1f, 0.1f, 0.1f};
   job.lights = {PointLight{{3, 8, 2}, {1, 1, 1}, {1, 0, 0}}};
   const World world = flatten(job);
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, {});
   const PinholeCamera camera(job.camera, job.width, job.height);
   const Image reference = render_image(camera, 37, 37, integrator, {1, 16});

@@ -20,7 +20,7 @@ struct Traced {
 /// Traces one ray through a scene with brute force.
 Traced trace(const RenderJob& job, const Ray& ray, IntegratorSettings settings = {}) {
   const World world = flatten(job);
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, settings);
   Traced t;
   RandomStream random(0, 0, 0);

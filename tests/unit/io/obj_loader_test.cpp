@@ -15,12 +15,12 @@ namespace mjray {
 namespace {
 
 // Triangles as "p/t/n p/t/n p/t/n" (0-based, "-" when absent), so failures print readably.
-std::vector<std::string> triangles_of(const ObjMesh& mesh) {
+std::vector<std::string> triangles_of(const TriangleMesh& mesh) {
   const auto field = [](int32_t i) { return i < 0 ? std::string("-") : std::to_string(i); };
   std::vector<std::string> result;
   for (const auto& triangle : mesh.triangles) {
     std::string text;
-    for (const ObjCorner& c : triangle) {
+    for (const MeshCorner& c : triangle) {
       if (!text.empty()) text += ' ';
       text += field(c.position) + "/" + field(c.uv) + "/" + field(c.normal);
     }
@@ -63,7 +63,7 @@ constexpr std::string_view kFivePositions = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\
 // --- statements and index forms --------------------------------------------------------------
 
 TEST(ObjLoader, ParsesPositionsExactlyAndIgnoresWAndColours) {
-  const ObjMesh mesh = parse_obj(
+  const TriangleMesh mesh = parse_obj(
       "v 1 2 3\nv -0.5 1e-3 +4.25\nv 0.1 0.2 0.3 1.0\nv 7 8 9 0.5 0.25 1\n", "p.obj");
   ASSERT_EQ(mesh.positions.size(), 4u);
   EXPECT_EQ(xyz(mesh.positions[0]), (std::array<float, 3>{1, 2, 3}));
@@ -75,13 +75,13 @@ TEST(ObjLoader, ParsesPositionsExactlyAndIgnoresWAndColours) {
 }
 
 TEST(ObjLoader, PositionOnlyCorners) {
-  const ObjMesh mesh = parse_obj(std::string(kTriangle) + "f 3 1 2\n", "t.obj");
+  const TriangleMesh mesh = parse_obj(std::string(kTriangle) + "f 3 1 2\n", "t.obj");
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"2/-/- 0/-/- 1/-/-"}));
   EXPECT_EQ(mesh.polygon_count, 1u);
 }
 
 TEST(ObjLoader, PositionUvCorners) {
-  const ObjMesh mesh =
+  const TriangleMesh mesh =
       parse_obj(std::string(kTriangle) + "vt 0 0\nvt 1 0\nvt 0 1\nf 1/3 2/1 3/2\n", "t.obj");
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"0/2/- 1/0/- 2/1/-"}));
   ASSERT_EQ(mesh.uvs.size(), 3u);
@@ -89,7 +89,7 @@ TEST(ObjLoader, PositionUvCorners) {
 }
 
 TEST(ObjLoader, PositionNormalCorners) {
-  const ObjMesh mesh =
+  const TriangleMesh mesh =
       parse_obj(std::string(kTriangle) + "vn 0 0 1\nvn 0 0 -1\nf 1//2 2//1 3//2\n", "t.obj");
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"0/-/1 1/-/0 2/-/1"}));
   ASSERT_EQ(mesh.normals.size(), 2u);
@@ -97,13 +97,13 @@ TEST(ObjLoader, PositionNormalCorners) {
 }
 
 TEST(ObjLoader, FullCorners) {
-  const ObjMesh mesh = parse_obj(
+  const TriangleMesh mesh = parse_obj(
       std::string(kTriangle) + "vt 0 0\nvt 1 0\nvn 0 0 1\nf 1/1/1 2/2/1 3/1/1\n", "t.obj");
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"0/0/0 1/1/0 2/0/0"}));
 }
 
 TEST(ObjLoader, NegativeIndicesAreRelativeToTheElementsReadSoFar) {
-  const ObjMesh mesh = parse_obj(
+  const TriangleMesh mesh = parse_obj(
       "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
       "f -3 -2 -1\n"
       "v 0 0 1\n"
@@ -119,14 +119,14 @@ TEST(ObjLoader, NegativeIndicesAreRelativeToTheElementsReadSoFar) {
 }
 
 TEST(ObjLoader, QuadIsFanTriangulated) {
-  const ObjMesh mesh = parse_obj(std::string(kFivePositions) + "f 2 3 4 5\n", "q.obj");
+  const TriangleMesh mesh = parse_obj(std::string(kFivePositions) + "f 2 3 4 5\n", "q.obj");
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"1/-/- 2/-/- 3/-/-",
                                                           "1/-/- 3/-/- 4/-/-"}));
   EXPECT_EQ(mesh.polygon_count, 1u);
 }
 
 TEST(ObjLoader, PentagonIsFanTriangulatedFromItsFirstCorner) {
-  const ObjMesh mesh = parse_obj(std::string(kFivePositions) +
+  const TriangleMesh mesh = parse_obj(std::string(kFivePositions) +
                                      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
                                      "f 5/1 4/2 3/3 2/4 1/5\n",
                                  "pent.obj");
@@ -139,7 +139,7 @@ TEST(ObjLoader, PentagonIsFanTriangulatedFromItsFirstCorner) {
 }
 
 TEST(ObjLoader, PolygonCountIsFacesBeforeTriangulation) {
-  const ObjMesh mesh = parse_obj(std::string(kFivePositions) +
+  const TriangleMesh mesh = parse_obj(std::string(kFivePositions) +
                                      "f 1 2 3\nf 1 2 3 4\nf 1 2 3 4 5\nfo 5 4 3 2 1\n",
                                  "n.obj");
   EXPECT_EQ(mesh.polygon_count, 4u);
@@ -147,7 +147,7 @@ TEST(ObjLoader, PolygonCountIsFacesBeforeTriangulation) {
 }
 
 TEST(ObjLoader, TextureCoordinatesKeepUAndVOnly) {
-  const ObjMesh mesh = parse_obj("vt 0.25 0.75 0.5\nvt 0.5\nvt -1.5 2e1 \n", "vt.obj");
+  const TriangleMesh mesh = parse_obj("vt 0.25 0.75 0.5\nvt 0.5\nvt -1.5 2e1 \n", "vt.obj");
   ASSERT_EQ(mesh.uvs.size(), 3u);
   EXPECT_EQ(uv(mesh.uvs[0]), (std::array<float, 2>{0.25f, 0.75f}));
   EXPECT_EQ(uv(mesh.uvs[1]), (std::array<float, 2>{0.5f, 0.0f}));
@@ -161,7 +161,7 @@ TEST(ObjLoader, CrlfAndLoneCrParseLikeLf) {
   const std::string crlf = "v 1 2 3\r\nv 4 5 6\r\nv 7 8 9\r\nvn 0 1 0\r\nf 1//1 2//1 3//1\r\n";
   const std::string cr = "v 1 2 3\rv 4 5 6\rv 7 8 9\rvn 0 1 0\rf 1//1 2//1 3//1\r";
   for (const std::string& text : {crlf, cr}) {
-    const ObjMesh mesh = parse_obj(text, "crlf.obj");
+    const TriangleMesh mesh = parse_obj(text, "crlf.obj");
     ASSERT_EQ(mesh.positions.size(), 3u);
     EXPECT_EQ(xyz(mesh.positions[2]), (std::array<float, 3>{7, 8, 9}));
     EXPECT_EQ(triangles_of(mesh), triangles_of(parse_obj(lf, "lf.obj")));
@@ -169,7 +169,7 @@ TEST(ObjLoader, CrlfAndLoneCrParseLikeLf) {
 }
 
 TEST(ObjLoader, CommentsBlankLinesTabsAndUnknownStatementsAreSkipped) {
-  const ObjMesh mesh = parse_obj(
+  const TriangleMesh mesh = parse_obj(
       "# header comment\n"
       "  # indented comment\n"
       "#v 9 9 9\n"
@@ -204,7 +204,7 @@ TEST(ObjLoader, CommentsBlankLinesTabsAndUnknownStatementsAreSkipped) {
 }
 
 TEST(ObjLoader, BackslashContinuesAStatement) {
-  const ObjMesh mesh = parse_obj(
+  const TriangleMesh mesh = parse_obj(
       "v 1 \\\n 2 3\n"
       "v 4 5 \\\r\n6\n"
       "v 7 8 9\n"
@@ -219,13 +219,13 @@ TEST(ObjLoader, BackslashContinuesAStatement) {
 
 TEST(ObjLoader, EmptyTextAndMissingFinalNewlineAndByteOrderMark) {
   EXPECT_TRUE(parse_obj("", "empty.obj").positions.empty());
-  const ObjMesh mesh = parse_obj("\xEF\xBB\xBFv 1 2 3\nv 4 5 6\nv 7 8 9\nf 1 2 3", "bom.obj");
+  const TriangleMesh mesh = parse_obj("\xEF\xBB\xBFv 1 2 3\nv 4 5 6\nv 7 8 9\nf 1 2 3", "bom.obj");
   EXPECT_EQ(mesh.positions.size(), 3u);
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"0/-/- 1/-/- 2/-/-"}));
 }
 
 TEST(ObjLoader, UnderflowingCoordinateRoundsToZero) {
-  const ObjMesh mesh = parse_obj("v 1e-50 -1e-400 2.5\n", "tiny.obj");
+  const TriangleMesh mesh = parse_obj("v 1e-50 -1e-400 2.5\n", "tiny.obj");
   ASSERT_EQ(mesh.positions.size(), 1u);
   EXPECT_EQ(xyz(mesh.positions[0]), (std::array<float, 3>{0, 0, 2.5f}));
 }
@@ -327,7 +327,7 @@ TEST(ObjLoader, DirectoryIsAnErrorNamingIt) {
 TEST(ObjLoader, LoadsAFileAndNamesItInErrors) {
   const auto dir = test::make_temp_dir("obj-file");
   write_file(dir / "good.obj", "v 0 0 0\r\nv 1 0 0\r\nv 1 1 0\r\nv 0 1 0\r\nf -4 -3 -2 -1\r\n");
-  const ObjMesh mesh = load_obj(dir / "good.obj");
+  const TriangleMesh mesh = load_obj(dir / "good.obj");
   EXPECT_EQ(mesh.positions.size(), 4u);
   EXPECT_EQ(triangles_of(mesh), (std::vector<std::string>{"0/-/- 1/-/- 2/-/-",
                                                           "0/-/- 2/-/- 3/-/-"}));
@@ -341,7 +341,7 @@ TEST(ObjLoader, LoadsAFileAndNamesItInErrors) {
 
 TEST(ObjLoader, CornellBoxOriginalCrlfNegativeQuads) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/small/cornell/CornellBox-Original.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/small/cornell/CornellBox-Original.obj");
   EXPECT_EQ(mesh.positions.size(), 72u);
   EXPECT_EQ(mesh.polygon_count, 18u);
   ASSERT_EQ(mesh.triangles.size(), 36u);
@@ -355,7 +355,7 @@ TEST(ObjLoader, CornellBoxOriginalCrlfNegativeQuads) {
 
 TEST(ObjLoader, CornellBoxEmbree) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/small/cornell/cornell_box.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/small/cornell/cornell_box.obj");
   EXPECT_EQ(mesh.positions.size(), 76u);
   EXPECT_EQ(mesh.polygon_count, 18u);
   ASSERT_EQ(mesh.triangles.size(), 36u);
@@ -368,7 +368,7 @@ TEST(ObjLoader, CornellBoxEmbree) {
 
 TEST(ObjLoader, SuzanneQuadsWithNormals) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/medium/suzanne.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/medium/suzanne.obj");
   EXPECT_EQ(mesh.positions.size(), 507u);
   EXPECT_EQ(mesh.normals.size(), 507u);
   EXPECT_EQ(mesh.polygon_count, 500u);
@@ -382,7 +382,7 @@ TEST(ObjLoader, SuzanneQuadsWithNormals) {
 
 TEST(ObjLoader, SpotControlMeshPentagonsWithUvs) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/small/spot/spot_control_mesh.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/small/spot/spot_control_mesh.obj");
   EXPECT_EQ(mesh.positions.size(), 188u);
   EXPECT_EQ(mesh.uvs.size(), 267u);
   EXPECT_EQ(mesh.polygon_count, 180u);
@@ -397,7 +397,7 @@ TEST(ObjLoader, SpotControlMeshPentagonsWithUvs) {
 
 TEST(ObjLoader, SponzaThreeComponentUvs) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/large/sponza/sponza.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/large/sponza/sponza.obj");
   EXPECT_EQ(mesh.positions.size(), 39999u);
   EXPECT_EQ(mesh.normals.size(), 39999u);
   EXPECT_EQ(mesh.uvs.size(), 71396u);
@@ -410,7 +410,7 @@ TEST(ObjLoader, SponzaThreeComponentUvs) {
 
 TEST(ObjLoader, Venus43kCrlfWithSplitNormals) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/medium/venus_43k.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/medium/venus_43k.obj");
   EXPECT_EQ(mesh.positions.size(), 19847u);
   EXPECT_EQ(mesh.normals.size(), 22155u);
   ASSERT_EQ(mesh.triangles.size(), 43357u);
@@ -420,7 +420,7 @@ TEST(ObjLoader, Venus43kCrlfWithSplitNormals) {
 
 TEST(ObjLoader, FullResolutionDragon) {
   MJRAY_REQUIRE_SHARED(shared);
-  const ObjMesh mesh = load_obj(shared / "models/large/dragon_vrip.obj");
+  const TriangleMesh mesh = load_obj(shared / "models/large/dragon_vrip.obj");
   EXPECT_EQ(mesh.positions.size(), 437645u);
   EXPECT_EQ(mesh.polygon_count, 871414u);
   ASSERT_EQ(mesh.triangles.size(), 871414u);
@@ -483,7 +483,7 @@ TEST(ObjLoader, AllSharedModelsMatchSources) {
   };
   for (const Expected& e : table) {
     SCOPED_TRACE(e.file);
-    const ObjMesh mesh = load_obj(shared / "models" / e.file);
+    const TriangleMesh mesh = load_obj(shared / "models" / e.file);
     EXPECT_EQ(mesh.positions.size(), e.positions);
     EXPECT_EQ(mesh.polygon_count, e.polygons);
     EXPECT_EQ(mesh.triangles.size(), e.triangles);

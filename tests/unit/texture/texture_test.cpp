@@ -13,6 +13,7 @@
 
 #include <jpeglib.h>
 
+#include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/brute_force.h"
 #include "mjray/camera/pinhole_camera.h"
 #include "mjray/core/error.h"
@@ -333,8 +334,8 @@ TEST(TextureImage, CorruptJpegIsAClearError) {
 
 /// The texture colour the integrator would use where `ray` first meets `world`.
 std::optional<Color> textured_kd(const World& world, const Ray& ray) {
-  const BruteForce accel(world);
-  const auto hit = accel.intersect(ray, kInfinity);
+  const BruteForce accel(world.primitives);
+  const auto hit = accel.intersect(ray, {});
   if (!hit) return std::nullopt;
   const SurfaceInteraction si = world.interaction(ray, *hit);
   return phong_of(world.materials[si.material]).kd_at(si.object_point, si.uv);
@@ -417,7 +418,7 @@ TEST(TextureShading, TextureReplacesKdForAmbientAndDiffuse) {
   job.ambient = {0.5f, 1, 1};
   job.lights = {PointLight{{0, 3, 0}, {0, 0, 0}, {1, 0, 0}}};
   const World world = flatten(job);
-  const BruteForce accel(world);
+  const BruteForce accel(world.primitives);
   const WhittedIntegrator integrator(world, accel, {});
   const Image image = render_image(PinholeCamera(job.camera, 9, 9), 9, 9, integrator, {});
   // Pixel centres land 1.28 units apart, clear of the cell edges; the centre one at the origin.
@@ -434,7 +435,7 @@ TEST(TextureShading, TextureReplacesKdForAmbientAndDiffuse) {
   job.ambient = {0, 0, 0};
   job.lights = {PointLight{{0, 3, 0}, {1, 1, 1}, {1, 0, 0}}};
   const World lit = flatten(job);
-  const BruteForce lit_accel(lit);
+  const BruteForce lit_accel(lit.primitives);
   const WhittedIntegrator lit_integrator(lit, lit_accel, {});
   const Image lit_image = render_image(PinholeCamera(job.camera, 9, 9), 9, 9, lit_integrator, {});
   expect_color_near(lit_image.at(4, 4), Color(0.2f, 0.4f, 0.6f), 1e-5f);

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "mjray/core/ray.h"
-#include "mjray/scene/world.h"
+#include "mjray/geometry/surface_interaction.h"
 
 namespace mjray {
 
