@@ -80,6 +80,28 @@ exit codes: 0 success, 1 scene or render error, 2 bad command line, 130 interrup
 )";
 }
 
+JobOptions job_options(const CommandLine& cl) {
+  JobOptions o;
+  o.accel.threads = cl.threads;
+  if (cl.optimal_grid) {
+    o.accel.kind = "grid";
+    o.accel.grid_size = 0;
+  } else if (cl.grid_size) {
+    o.accel.kind = *cl.grid_size == 0 ? "none" : "grid";
+    o.accel.grid_size = *cl.grid_size;
+  }
+  if (!cl.accel.empty()) o.accel.kind = cl.accel;
+  o.integrator = {cl.max_reflection_depth, cl.max_refraction_depth, cl.area_light_samples};
+  o.render.threads = cl.threads;
+  o.render.seed = cl.seed;
+  o.render.antialias_samples = cl.antialias_samples;
+  o.render.antialias_threshold = cl.antialias_threshold;
+  o.outputs.output = cl.output;
+  o.outputs.outdir = cl.outdir;
+  o.outputs.encoding.gamma = cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear;
+  return o;
+}
+
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine cl;
   constexpr long long kMaxInt = 1 << 30;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mjray/job/job_options.h"
 #include "mjray/lua/scene_loader.h"
 
 namespace mjray {
@@ -43,6 +44,10 @@ class UsageError : public std::runtime_error {
 
 /// Parses argv; throws UsageError.
 CommandLine parse_command_line(const std::vector<std::string>& args);
+
+/// The job options the command line asks for: --accel wins, then -o, then -g (0 = none), else
+/// the BVH; sampling, outputs and encoding as given.
+JobOptions job_options(const CommandLine& cl);
 
 /// The --help text.
 std::string usage_text();

@@ -6,6 +6,7 @@
 #include <sys/resource.h>
 
 #include "mjray/core/error.h"
+#include "mjray/io/atomic_file.h"
 
 namespace mjray {
 
@@ -71,9 +72,7 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
     out += i + 1 < jobs.size() ? ",\n" : "\n";
   }
   out += "]\n";
-  std::ofstream file(path);
-  file << out;
-  if (!file.flush()) throw OutputError("cannot write the statistics to '" + path.string() + "'");
+  write_file_atomically(path, out);
 }
 
 }  // namespace mjray

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "mjray/render/renderer.h"
+#include "mjray/render/image_render.h"
 
 namespace mjray {
 

@@ -35,7 +35,7 @@ void install_interrupt_handlers() {
 
 bool interrupted() { return g_interrupted; }
 
-RenderWatcher::RenderWatcher(TileRender& render, std::filesystem::path image_path, WatchOptions options)
+RenderWatcher::RenderWatcher(ImageRender& render, std::filesystem::path image_path, WatchOptions options)
     : render_(render), image_path_(std::move(image_path)), options_(options), terminal_(::isatty(2) != 0) {
   thread_ = std::thread([this] { loop(); });
 }
@@ -62,7 +62,7 @@ void RenderWatcher::loop() {
     if (options_.snapshot_interval_seconds > 0 &&
         std::chrono::duration<double>(now - last_snapshot).count() >= options_.snapshot_interval_seconds) {
       try {
-        write_image(render_.snapshot(), image_path_, options_.gamma);
+        write_image(render_.snapshot(), image_path_, options_.encoding);
       } catch (const std::exception& e) {
         if (!options_.quiet) std::fprintf(stderr, "\nmjray: warning: %s\n", e.what());
       }

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <thread>
 
-#include "mjray/io/image_writer.h"
-#include "mjray/render/renderer.h"
+#include "mjray/io/image_codec.h"
+#include "mjray/render/image_render.h"
 
 namespace mjray {
 
@@ -20,13 +20,13 @@ bool interrupted();
 struct WatchOptions {
   bool quiet = false;                   ///< no progress output
   double snapshot_interval_seconds = 5; ///< incremental image rewrites; 0 = never
-  OutputGamma gamma = OutputGamma::kLinear;
+  EncodeOptions encoding;               ///< of the incremental image rewrites
 };
 
 /// Runs while it lives; the destructor stops the thread and prints the final 100% line.
 class RenderWatcher {
  public:
-  RenderWatcher(TileRender& render, std::filesystem::path image_path, WatchOptions options);
+  RenderWatcher(ImageRender& render, std::filesystem::path image_path, WatchOptions options);
   ~RenderWatcher();
   /// Marks the render finished so the last progress line says 100%.
   void finish() { finished_ = true; }
@@ -35,7 +35,7 @@ class RenderWatcher {
   void loop();
   void report(double elapsed, bool final);
 
-  TileRender& render_;
+  ImageRender& render_;
   std::filesystem::path image_path_;
   WatchOptions options_;
   bool terminal_;

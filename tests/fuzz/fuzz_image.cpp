@@ -13,7 +13,7 @@
 #include <string>
 
 #include "mjray/core/error.h"
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_reader.h"
 
 namespace {
 

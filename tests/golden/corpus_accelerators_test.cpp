@@ -7,7 +7,7 @@
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/lua/scene_loader.h"
-#include "mjray/render/renderer.h"
+#include "mjray/render/image_render.h"
 #include "mjray/scene/flatten.h"
 #include "support/test_paths.h"
 

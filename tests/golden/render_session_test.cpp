@@ -11,12 +11,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "mjray/integrator/whitted_integrator.h"
-#include "mjray/accel/make_accelerator.h"
-#include "mjray/io/image_writer.h"
-#include "mjray/render/renderer.h"
-#include "mjray/scene/flatten.h"
+#include "mjray/io/image_codec.h"
+#include "mjray/io/image_reader.h"
+#include "mjray/render/image_render.h"
 #include "support/scene_builder.h"
+#include "support/test_job.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 
@@ -39,12 +38,16 @@ RenderJob busy_scene(int size) {
   return job;
 }
 
+JobOptions busy_options() {
+  JobOptions o;
+  o.integrator = {4, 4, 2};
+  return o;
+}
+
 struct Fixture {
-  RenderJob job = busy_scene(64);
-  World world = flatten(job);
-  std::unique_ptr<Accelerator> accel = make_accelerator(world.primitives, {});
-  WhittedIntegrator integrator{world, *accel, {4, 4, 2}};
-  PinholeCamera camera{job.camera, job.width, job.height};
+  test::TestJob job{busy_scene(64), busy_options()};
+  const PinholeCamera& camera = job.prepared().camera();
+  const Integrator& integrator = job.prepared().integrator();
 };
 
 TEST(GoldenRender, IdenticalForAnyThreadCountTileSizeAndAntialiasing) {
@@ -73,13 +76,13 @@ TEST(GoldenRender, StopAfterSomeTilesThenResumeGivesTheSameImage) {
     s.antialias_samples = aa;
     const Image reference = render_image(f.camera, 64, 64, f.integrator, s);
     for (const int stop_after : {1, 17, 40}) {
-      TileRender first(f.camera, 64, 64, f.integrator, s);
+      ImageRender first(f.camera, 64, 64, f.integrator, s);
       first.stop_after_tiles(stop_after);
       ASSERT_FALSE(first.run());
       // Through the file format, as a real resume does.
       const auto dir = test::make_temp_dir("resume");
       write_checkpoint(first.checkpoint(), dir / "state");
-      TileRender second(f.camera, 64, 64, f.integrator, s);
+      ImageRender second(f.camera, 64, 64, f.integrator, s);
       second.resume_from(read_checkpoint(dir / "state"));
       ASSERT_TRUE(second.run());
       EXPECT_EQ(second.image().pixels(), reference.pixels()) << "stopped after " << stop_after << ", -a " << aa;
@@ -93,7 +96,7 @@ TEST(GoldenRender, StopDuringAntialiasingThenResumeGivesTheSameImage) {
   RenderSettings s;
   s.antialias_samples = 4;
   const Image reference = render_image(f.camera, 64, 64, f.integrator, s);
-  TileRender first(f.camera, 64, 64, f.integrator, s);
+  ImageRender first(f.camera, 64, 64, f.integrator, s);
   // Stop from another thread as soon as anti-aliasing has begun.
   std::thread stopper([&] {
     while (first.progress().antialias_pass == 0) std::this_thread::yield();
@@ -101,7 +104,7 @@ TEST(GoldenRender, StopDuringAntialiasingThenResumeGivesTheSameImage) {
   });
   const bool finished = first.run();
   stopper.join();
-  TileRender second(f.camera, 64, 64, f.integrator, s);
+  ImageRender second(f.camera, 64, 64, f.integrator, s);
   if (!finished) second.resume_from(first.checkpoint());
   ASSERT_TRUE(finished || second.run());
   EXPECT_EQ((finished ? first.image() : second.image()).pixels(), reference.pixels());
@@ -116,11 +119,8 @@ TEST(GoldenRender, StatisticsCountWhatTheSceneImplies) {
   job.height = 30;
   job.camera = {{0, 5, 0}, {0, -1, 0}, {0, 0, -1}, 60};
   job.lights = {PointLight{{0, 10, 0}, {1, 1, 1}, {1, 0, 0}}};
-  const World world = flatten(job);
-  const auto accel = make_accelerator(world.primitives, {});
-  const WhittedIntegrator integrator(world, *accel, {});
   RenderStats stats;
-  render_image(PinholeCamera(job.camera, 40, 30), 40, 30, integrator, {}, &stats);
+  test::TestJob(job, JobOptions{}).render(&stats);
   EXPECT_EQ(stats.rays.primary, 40u * 30u);
   EXPECT_EQ(stats.rays.shadow, 40u * 30u);
   EXPECT_EQ(stats.rays.secondary, 0u);

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_reader.h"
 #include "support/test_paths.h"
 
 namespace mjray {

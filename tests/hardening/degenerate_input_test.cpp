@@ -12,7 +12,7 @@
 #include "mjray/camera/pinhole_camera.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/lua/scene_loader.h"
-#include "mjray/render/renderer.h"
+#include "mjray/render/image_render.h"
 #include "mjray/scene/flatten.h"
 #include "support/lua_script_test.h"
 

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/core/error.h"
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_reader.h"
 #include "support/scratch_files.h"
 
 namespace mjray {

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_codec.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 
@@ -133,8 +133,8 @@ TEST_F(HardeningOutput, MissingOutputFolderIsAClearErrorAndWritesNothing) {
   const auto scene = write("scene.lua", lit_sphere("'absent/out.png'"));
   const RunResult r = run({scene.string()});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "mjray: error: cannot write '" + (dir_ / "absent/out.png").string() + "': folder '" +
-                       (dir_ / "absent").string() + "' does not exist\n");
+  EXPECT_EQ(r.err, "mjray: error: " + at(5) + ": gr.render: cannot write '" + (dir_ / "absent/out.png").string() +
+                       "': folder '" + (dir_ / "absent").string() + "' does not exist\n");
   EXPECT_EQ(listing(), "scene.lua");
 }
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_codec.h"
 #include "mjray/lua/scene_loader.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"

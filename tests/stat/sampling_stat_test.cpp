@@ -10,7 +10,7 @@
 #include "mjray/accel/brute_force.h"
 #include "mjray/core/rng.h"
 #include "mjray/core/sampling.h"
-#include "mjray/render/renderer.h"
+#include "mjray/render/image_render.h"
 #include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
 

@@ -330,6 +330,7 @@ int gr_render(lua_State* L) {
   bool post = ctx.options.transform_order == TransformOrder::kPost;
   if (ctx.options.transform_order == TransformOrder::kAuto) post = ctx.saw_table_mesh;
   job.root = Snapshot(post).copy(root);
+  job.post_multiplied = post;
   ctx.description->jobs.push_back(std::move(job));
   return 0;
 }

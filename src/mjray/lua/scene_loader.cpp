@@ -283,22 +283,4 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   return description;
 }
 
-void check_not_an_input(const SceneDescription& scene, const std::filesystem::path& output,
-                        const FileLocation& where, const std::string& what) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path target = fs::weakly_canonical(fs::absolute(output, ec), ec);
-  std::vector<fs::path> inputs = scene.inputs;
-  inputs.insert(inputs.begin(), scene.script);
-  for (const fs::path& input : inputs) {
-    std::error_code ignored;
-    // equivalent() also catches hard links; canonical paths catch a target not written yet.
-    const bool same = fs::equivalent(output, input, ignored) || fs::weakly_canonical(fs::absolute(input, ignored), ignored) == target;
-    if (!same) continue;
-    const std::string kind = input == scene.script ? "the scene script itself" : "a file the scene reads";
-    throw SceneError(where.to_string() + ": " + what + " would overwrite '" + output.string() + "', which is " + kind +
-                     "; choose another output file");
-  }
-}
-
 }  // namespace mjray

@@ -42,10 +42,4 @@ struct SceneLoadOptions {
 /// script renders nothing.
 SceneDescription load_scene(const std::filesystem::path& script, const SceneLoadOptions& options);
 
-/// Throws SceneError("WHERE: WHAT would overwrite 'FILE', which the scene reads ...") when
-/// `output` is the script or one of scene.inputs (compared as canonical paths, so links and
-/// "../" spellings are caught). `what` names the writer ("gr.render", "--stats-json").
-void check_not_an_input(const SceneDescription& scene, const std::filesystem::path& output,
-                        const FileLocation& where, const std::string& what);
-
 }  // namespace mjray

@@ -11,7 +11,7 @@ extern "C" {
 #include <lua.h>
 }
 
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_reader.h"
 #include "mjray/io/path_resolver.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"

@@ -1,23 +1,27 @@
 #include "mjray/render/render_checkpoint.h"
 
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "mjray/core/error.h"
+#include "mjray/io/atomic_file.h"
 
 namespace mjray {
 
 namespace {
 
-constexpr char kMagic[8] = {'M', 'J', 'R', 'S', 'T', 'A', 'T', '1'};
+constexpr char kMagic[8] = {'M', 'J', 'R', 'S', 'T', 'A', 'T', '2'};
 
 template <class T>
 void put(std::string& out, const T& value) {
   out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+template <class T>
+void put_vector(std::string& out, const std::vector<T>& values) {
+  put(out, uint64_t(values.size()));
+  out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
 }
 
 /// Reads from a byte buffer, failing cleanly at the end instead of reading past it.
@@ -30,12 +34,21 @@ class Reader {
     bytes(&value, sizeof value);
     return value;
   }
+  template <class T>
+  std::vector<T> get_vector() {
+    const auto count = get<uint64_t>();
+    if (count > (data_.size() - offset_) / sizeof(T)) corrupt();
+    std::vector<T> values(count);
+    bytes(values.data(), count * sizeof(T));
+    return values;
+  }
   void bytes(void* out, size_t n) {
     if (n > data_.size() - offset_) throw SceneError(path_.string() + ": the resume state file is truncated");
     std::memcpy(out, data_.data() + offset_, n);
     offset_ += n;
   }
   bool at_end() const { return offset_ == data_.size(); }
+  [[noreturn]] void corrupt() const { throw SceneError(path_.string() + ": the resume state file is corrupt"); }
 
  private:
   const std::string& data_;
@@ -47,25 +60,21 @@ class Reader {
 
 void write_checkpoint(const RenderCheckpoint& c, const std::filesystem::path& path) {
   std::string out(kMagic, sizeof kMagic);
-  put(out, c.fingerprint);
-  put(out, int32_t(c.image.width()));
-  put(out, int32_t(c.image.height()));
+  put(out, uint64_t(c.fingerprint.size()));
+  out += c.fingerprint;
+  put(out, int32_t(c.film.width()));
+  put(out, int32_t(c.film.height()));
   put(out, int32_t(c.tile_size));
   put(out, int32_t(c.antialias_pass));
-  put(out, uint64_t(c.tile_done.size()));
-  out.append(reinterpret_cast<const char*>(c.tile_done.data()), c.tile_done.size());
-  put(out, uint64_t(c.supersampled.size()));
-  out.append(reinterpret_cast<const char*>(c.supersampled.data()), c.supersampled.size());
-  out.append(reinterpret_cast<const char*>(c.image.pixels().data()), c.image.pixels().size() * sizeof(Color));
-
-  const std::string temporary = path.string() + ".tmp-" + std::to_string(::getpid());
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (!file) throw OutputError("cannot write the resume state '" + path.string() + "': " + std::strerror(errno));
-  const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw OutputError("cannot write the resume state '" + path.string() + "'");
+  put_vector(out, c.tile_done);
+  put_vector(out, c.supersampled);
+  put_vector(out, c.pass_pixels);
+  put_vector(out, c.pass_done);
+  out.append(reinterpret_cast<const char*>(c.film.pixels().data()), c.film.pixels().size() * sizeof(FilmPixel));
+  try {
+    write_file_atomically(path, out);
+  } catch (const OutputError& e) {
+    throw OutputError(std::string("the resume state: ") + e.what());
   }
 }
 
@@ -78,21 +87,23 @@ RenderCheckpoint read_checkpoint(const std::filesystem::path& path) {
   r.bytes(magic, sizeof magic);
   if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) throw SceneError(path.string() + ": not an mjray resume state file");
   RenderCheckpoint c;
-  c.fingerprint = r.get<uint64_t>();
+  const std::vector<char> fingerprint = r.get_vector<char>();
+  c.fingerprint.assign(fingerprint.begin(), fingerprint.end());
   const auto width = r.get<int32_t>(), height = r.get<int32_t>();
   c.tile_size = r.get<int32_t>();
   c.antialias_pass = r.get<int32_t>();
   if (width <= 0 || height <= 0 || width > 65536 || height > 65536 || c.tile_size <= 0 || c.antialias_pass < 0)
-    throw SceneError(path.string() + ": the resume state file is corrupt");
-  for (std::vector<uint8_t>* flags : {&c.tile_done, &c.supersampled}) {
-    const auto count = r.get<uint64_t>();
-    if (count > data.size()) throw SceneError(path.string() + ": the resume state file is corrupt");
-    flags->resize(count);
-    r.bytes(flags->data(), count);
-  }
-  c.image = Image(width, height);
-  r.bytes(c.image.data(), c.image.pixels().size() * sizeof(Color));
-  if (!r.at_end()) throw SceneError(path.string() + ": the resume state file is corrupt");
+    r.corrupt();
+  c.tile_done = r.get_vector<uint8_t>();
+  c.supersampled = r.get_vector<uint8_t>();
+  c.pass_pixels = r.get_vector<int32_t>();
+  c.pass_done = r.get_vector<uint8_t>();
+  if (c.pass_done.size() != c.pass_pixels.size()) r.corrupt();
+  for (const int32_t p : c.pass_pixels)
+    if (p < 0 || int64_t(p) >= int64_t(width) * height) r.corrupt();
+  c.film = Film(width, height);
+  r.bytes(c.film.pixels().data(), c.film.pixels().size() * sizeof(FilmPixel));
+  if (!r.at_end()) r.corrupt();
   return c;
 }
 

@@ -3,21 +3,24 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
-#include "mjray/core/image.h"
+#include "mjray/render/film.h"
 
 namespace mjray {
 
-/// The state of a render between units of work: finished tiles of the first pass, or the
-/// image and supersampled set at the start of an anti-aliasing pass.
+/// The state of a render between units of work: the film with everything finished, which
+/// first-pass tiles are done, and how far adaptive anti-aliasing got.
 struct RenderCheckpoint {
-  uint64_t fingerprint = 0;           ///< hash of the scene and every option that shapes the image
+  std::string fingerprint;            ///< what shaped the image: the scene, its files, the options (job_fingerprint)
   int tile_size = 0;
-  int antialias_pass = 0;             ///< 0: first pass; k ≥ 1: about to run anti-aliasing pass k
-  std::vector<uint8_t> tile_done;     ///< first pass: one flag per tile, row-major
-  std::vector<uint8_t> supersampled;  ///< one flag per pixel
-  Image image;                        ///< pixels of finished tiles (first pass) or the whole image
+  int antialias_pass = 0;             ///< 0: first pass; k ≥ 1: in anti-aliasing pass k
+  std::vector<uint8_t> tile_done;     ///< one flag per tile, row-major
+  std::vector<uint8_t> supersampled;  ///< one flag per pixel: planned by an anti-aliasing pass so far
+  std::vector<int32_t> pass_pixels;   ///< the plan of pass `antialias_pass` (empty: not planned yet)
+  std::vector<uint8_t> pass_done;     ///< one flag per planned pixel: finished
+  Film film;
 };
 
 /// Writes a checkpoint atomically (temporary file + rename). Throws OutputError.

@@ -50,6 +50,7 @@ struct RenderJob {
   Color ambient;
   std::vector<Light> lights;
   Background background;
+  bool post_multiplied = false;           ///< node transforms composed M = M·T (old skeleton)
 };
 
 /// Everything a script produced.

@@ -5,23 +5,14 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/integrator/whitted_integrator.h"
-#include "mjray/accel/brute_force.h"
-#include "mjray/camera/pinhole_camera.h"
-#include "mjray/render/renderer.h"
-#include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
+#include "support/test_job.h"
 
 namespace mjray {
 namespace {
 
 /// Renders a job with brute force, as the oracle renderer.
-Image render_job(const RenderJob& job) {
-  const World world = flatten(job);
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, {});
-  return render_image(PinholeCamera(job.camera, job.width, job.height), job.width, job.height, integrator, {});
-}
+Image render_job(const RenderJob& job) { return test::render(job); }
 
 /// A camera straight above the origin looking down, image x along +x and image up along −z.
 RenderJob looking_down(float height, int size, float fovy) {
@@ -143,14 +134,12 @@ TEST(ClosedForm, ImageIsIdenticalForAnyThreadCountAndTileSize) {
                           test::sphere({1, 1, 0}, 1), test::box({-3, 0, -1}, {-1, 2, 1})});
   job.ambient = {0.1f, 0.1f, 0.1f};
   job.lights = {PointLight{{3, 8, 2}, {1, 1, 1}, {1, 0, 0}}};
-  const World world = flatten(job);
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, {});
-  const PinholeCamera camera(job.camera, job.width, job.height);
-  const Image reference = render_image(camera, 37, 37, integrator, {1, 16});
-  for (const RenderSettings s : {RenderSettings{2, 16}, RenderSettings{3, 5}, RenderSettings{4, 1}}) {
-    const Image other = render_image(camera, 37, 37, integrator, s);
-    EXPECT_EQ(other.pixels(), reference.pixels()) << s.threads << " threads, tile " << s.tile_size;
+  const Image reference = test::render(job);
+  for (const auto [threads, tile] : {std::pair{2, 16}, std::pair{3, 5}, std::pair{4, 1}}) {
+    JobOptions options = test::oracle_options();
+    options.render.threads = threads;
+    options.render.tile_size = tile;
+    EXPECT_EQ(test::render(job, options).pixels(), reference.pixels()) << threads << " threads, tile " << tile;
   }
 }
 

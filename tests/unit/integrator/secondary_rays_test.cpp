@@ -3,11 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/accel/brute_force.h"
-#include "mjray/camera/pinhole_camera.h"
-#include "mjray/integrator/whitted_integrator.h"
-#include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
+#include "support/test_job.h"
 
 namespace mjray {
 namespace {
@@ -19,12 +16,8 @@ struct Traced {
 
 /// Traces one ray through a scene with brute force.
 Traced trace(const RenderJob& job, const Ray& ray, IntegratorSettings settings = {}) {
-  const World world = flatten(job);
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, settings);
   Traced t;
-  RandomStream random(0, 0, 0);
-  t.colour = integrator.radiance(ray, random, t.rays);
+  t.colour = test::TestJob(job, test::oracle_options(settings)).radiance(ray, &t.rays);
   return t;
 }
 

@@ -1,4 +1,5 @@
-#include "mjray/io/image_writer.h"
+#include "mjray/io/image_codec.h"
+#include "mjray/io/image_reader.h"
 
 #include <cmath>
 #include <csignal>
@@ -202,8 +203,8 @@ TEST(ImageWriterFormat, SrgbGammaAppliesToFileValues) {
     e.at(1, 0) = Color(code(0), code(3), code(124));
     return e;
   }();
-  write_image(image, dir / "out.png", OutputGamma::kSrgb);
-  write_image(image, dir / "out.ppm", OutputGamma::kSrgb);
+  write_image(image, dir / "out.png", {OutputGamma::kSrgb});
+  write_image(image, dir / "out.ppm", {OutputGamma::kSrgb});
   expect_same_pixels(expected_png, read_image(dir / "out.png"));
   expect_same_pixels(expected_png, read_image(dir / "out.ppm"));
 }
@@ -213,10 +214,10 @@ TEST(ImageWriterFormat, UnknownExtensionIsRejected) {
   const fs::path path = dir / "out.xyz";
   EXPECT_EQ(write_error(distinct_image(), path),
             "cannot write '" + path.string() +
-                "': unsupported image format '.xyz' (use .png or .ppm)");
+                "': unsupported image format '.xyz' (mjray writes .png, .ppm)");
   EXPECT_EQ(write_error(distinct_image(), dir / "noext"),
             "cannot write '" + (dir / "noext").string() +
-                "': unsupported image format '' (use .png or .ppm)");
+                "': unsupported image format '' (mjray writes .png, .ppm)");
   EXPECT_TRUE(file_names(dir).empty());
 }
 

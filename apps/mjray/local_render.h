@@ -1,0 +1,30 @@
+#pragma once
+/// Renders one job on this machine as a user at a terminal expects: progress, incremental
+/// images, Ctrl-C keeping the partial image and its state, --resume finishing it.
+
+#include <string>
+
+#include "job_statistics.h"
+#include "mjray/job/job_options.h"
+#include "mjray/scene/scene_description.h"
+
+namespace mjray {
+
+/// How the local driver reports and resumes.
+struct LocalRunOptions {
+  bool quiet = false;         ///< no progress (the summary still prints with print_stats)
+  bool print_stats = false;   ///< the summary even when quiet
+  bool resume = false;        ///< continue from the image's state file
+  double snapshot_interval_seconds = 5;
+};
+
+/// Thrown when the user interrupted a render (the partial image and state are written);
+/// the program exits 130.
+struct Interrupted {};
+
+/// Prepares and renders job `index` of `scene`, writes its image and returns its statistics.
+/// Throws Interrupted, SceneError or OutputError.
+JobStatistics render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
+                                 const LocalRunOptions& run, double parse_seconds);
+
+}  // namespace mjray

@@ -1,0 +1,20 @@
+#pragma once
+/// What decides a job's pixels, written down so that a resume can be refused with the reason.
+
+#include <string>
+
+#include "mjray/job/job_options.h"
+#include "mjray/scene/scene_description.h"
+
+namespace mjray {
+
+/// One "name=value" line per thing that shapes the image of job `index`: the bytes of the
+/// script and of every file it read (as hashes), the job's place in the script, its size,
+/// transform order, and every option that changes pixels (not threads or the accelerator,
+/// which never do). Reads the files, so call it only when a state is saved or resumed.
+std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& options);
+
+/// The lines of `saved` and `current` that differ, for a refused resume ("-s: 2 then, 4 now").
+std::string fingerprint_difference(const std::string& saved, const std::string& current);
+
+}  // namespace mjray

@@ -1,0 +1,29 @@
+#pragma once
+/// Where a scene's images go, checked before anything renders.
+
+#include <filesystem>
+#include <string>
+
+#include "mjray/core/error.h"
+#include "mjray/job/job_options.h"
+#include "mjray/scene/scene_description.h"
+
+namespace mjray {
+
+/// Where job `index`'s image goes: --output, --outdir (the file name of gr.render's path),
+/// or gr.render's path, relative to the script's folder.
+std::filesystem::path output_path(const SceneDescription& scene, size_t index, const OutputOptions& options);
+
+/// Checks every job's output before a pixel is traced: --output with one image only, a
+/// format mjray writes that takes the encoding options, an existing folder (creating
+/// --outdir), and no output that would replace the script or a file it read. Throws
+/// SceneError or OutputError with the gr.render call's location.
+void check_outputs(const SceneDescription& scene, const OutputOptions& options);
+
+/// Throws SceneError("WHERE: WHAT would overwrite 'FILE', which the scene reads ...") when
+/// `output` is the script or one of scene.inputs (compared as canonical paths, so links and
+/// "../" spellings are caught). `what` names the writer ("gr.render", "--stats-json").
+void check_not_an_input(const SceneDescription& scene, const std::filesystem::path& output,
+                        const FileLocation& where, const std::string& what);
+
+}  // namespace mjray

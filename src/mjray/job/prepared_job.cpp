@@ -1,0 +1,19 @@
+#include "mjray/job/prepared_job.h"
+
+#include "mjray/integrator/whitted_integrator.h"
+#include "mjray/job/job_outputs.h"
+#include "mjray/scene/flatten.h"
+
+namespace mjray {
+
+PreparedJob::PreparedJob(const SceneDescription& scene, size_t index, const JobOptions& options)
+    : job_(scene.jobs.at(index)),
+      output_(output_path(scene, index, options.outputs)),
+      world_(flatten(job_, &warnings_)),
+      accel_(make_accelerator(world_.primitives, options.accel)),
+      camera_(job_.camera, job_.width, job_.height),
+      integrator_(std::make_unique<WhittedIntegrator>(world_, *accel_, options.integrator)) {
+  build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start_).count();
+}
+
+}  // namespace mjray

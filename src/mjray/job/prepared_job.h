@@ -1,0 +1,52 @@
+#pragma once
+/// One gr.render job made ready to render: the flat world, its accelerator, the camera and
+/// the integrator, built from the scene description and the job options.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mjray/accel/accelerator.h"
+#include "mjray/camera/pinhole_camera.h"
+#include "mjray/integrator/integrator.h"
+#include "mjray/job/job_options.h"
+#include "mjray/scene/scene_description.h"
+#include "mjray/scene/world.h"
+
+namespace mjray {
+
+/// Owns everything a render of one job reads; not movable (the parts refer to each other).
+class PreparedJob {
+ public:
+  PreparedJob(const SceneDescription& scene, size_t index, const JobOptions& options);
+  PreparedJob(const PreparedJob&) = delete;
+  PreparedJob& operator=(const PreparedJob&) = delete;
+
+  const RenderJob& description() const { return job_; }
+  int width() const { return job_.width; }
+  int height() const { return job_.height; }
+  const std::filesystem::path& output() const { return output_; }
+  const World& world() const { return world_; }
+  const Accelerator& accelerator() const { return *accel_; }
+  const PinholeCamera& camera() const { return camera_; }
+  const Integrator& integrator() const { return *integrator_; }
+  /// flatten's warnings ("file:line: text").
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  /// Seconds spent flattening and building the accelerator.
+  double build_seconds() const { return build_seconds_; }
+
+ private:
+  const RenderJob& job_;
+  std::filesystem::path output_;
+  std::vector<std::string> warnings_;
+  std::chrono::steady_clock::time_point build_start_ = std::chrono::steady_clock::now();
+  World world_;
+  std::unique_ptr<Accelerator> accel_;
+  PinholeCamera camera_;
+  std::unique_ptr<Integrator> integrator_;
+  double build_seconds_ = 0;
+};
+
+}  // namespace mjray

@@ -1,0 +1,177 @@
+#include "mjray/render/image_render.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "mjray/core/error.h"
+#include "mjray/render/adaptive_antialiasing.h"
+
+namespace mjray {
+
+namespace {
+
+TileLayout layout_of(int width, int height, int tile_size) { return {width, height, std::max(1, tile_size)}; }
+
+}  // namespace
+
+ImageRender::ImageRender(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
+                         const RenderSettings& settings)
+    : sampler_(camera, integrator, width, height, settings),
+      settings_(settings),
+      layout_(layout_of(width, height, settings.tile_size)),
+      workers_(sampler_, layout_, settings.threads),
+      film_(width, height),
+      supersampled_(size_t(width) * size_t(height), 0) {
+  settings_.tile_size = layout_.tile_size;
+  tile_done_ = std::make_unique<std::atomic<uint8_t>[]>(size_t(layout_.count()));
+  for (int t = 0; t < layout_.count(); ++t) tile_done_[size_t(t)] = 0;
+  total_ = uint64_t(width) * uint64_t(height);
+}
+
+void ImageRender::resume_from(const RenderCheckpoint& c) {
+  if (c.film.width() != film_.width() || c.film.height() != film_.height() || c.tile_size != layout_.tile_size ||
+      c.tile_done.size() != size_t(layout_.count()) || c.supersampled.size() != supersampled_.size())
+    throw SceneError("the resume state does not match this render (size or tiles differ)");
+  film_ = c.film;
+  supersampled_ = c.supersampled;
+  pass_pixels_ = c.pass_pixels;
+  pass_done_ = c.pass_done;
+  antialias_pass_ = c.antialias_pass;
+  uint64_t done = 0;
+  for (int t = 0; t < layout_.count(); ++t) {
+    tile_done_[size_t(t)] = c.tile_done[size_t(t)];
+    if (c.tile_done[size_t(t)]) done += uint64_t(layout_.rect(t).pixel_count());
+  }
+  done_ = done;
+}
+
+bool ImageRender::run() {
+  const auto start = std::chrono::steady_clock::now();
+  const bool finished = run_first_pass() && run_antialiasing();
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return finished;
+}
+
+bool ImageRender::run_first_pass() {
+  if (antialias_pass_ > 0) return true;
+  std::vector<int> pending;
+  for (int t = 0; t < layout_.count(); ++t)
+    if (!tile_done_[size_t(t)]) pending.push_back(t);
+  const bool finished = workers_.render_tiles(pending, film_, stop_.get_token(), [&](int tile) {
+    tile_done_[size_t(tile)].store(1, std::memory_order_release);
+    done_ += uint64_t(layout_.rect(tile).pixel_count());
+    if (++tiles_finished_ == stop_after_tiles_) stop_.request_stop();
+  });
+  if (!finished) return false;
+  antialias_pass_ = 1;
+  return true;
+}
+
+bool ImageRender::plan_pass() {
+  const std::vector<int> pixels = next_supersample_set(film_.resolve(), settings_.antialias_threshold, supersampled_);
+  if (pixels.empty()) return false;
+  pass_pixels_.assign(pixels.begin(), pixels.end());
+  pass_done_.assign(pixels.size(), 0);
+  return true;
+}
+
+bool ImageRender::run_antialiasing() {
+  if (settings_.antialias_samples <= 0) return true;
+  const uint64_t samples_per_pixel = uint64_t(settings_.antialias_samples) * uint64_t(settings_.antialias_samples);
+  for (; antialias_pass_ <= settings_.antialias_max_passes; ++antialias_pass_) {
+    if (stop_.stop_requested()) return false;
+    // Plan the pass from the image the last pass left (a resumed pass keeps its plan).
+    if (pass_pixels_.empty() && !plan_pass()) break;
+    std::vector<int> pending;
+    std::vector<size_t> plan_index;  // of each pending pixel in pass_pixels_
+    for (size_t k = 0; k < pass_pixels_.size(); ++k) {
+      if (pass_done_[k]) {
+        done_ += samples_per_pixel;
+        continue;
+      }
+      pending.push_back(pass_pixels_[k]);
+      plan_index.push_back(k);
+    }
+    total_ += pass_pixels_.size() * samples_per_pixel;
+    const bool finished = workers_.render_pixels(pending, stop_.get_token(), [&](const SupersampledChunk& chunk) {
+      const size_t first = size_t(chunk.pixels.data() - pending.data());
+      std::lock_guard lock(film_mutex_);
+      for (size_t k = 0; k < chunk.pixels.size(); ++k) {
+        const int p = chunk.pixels[k];
+        film_.at(p % film_.width(), p / film_.width()) = chunk.values[k];
+        pass_done_[plan_index[first + k]] = 1;
+      }
+      pixels_supersampled_ += chunk.pixels.size();
+      done_ += chunk.pixels.size() * samples_per_pixel;
+    });
+    if (!finished) return false;
+    std::lock_guard lock(film_mutex_);
+    pass_pixels_.clear();
+    pass_done_.clear();
+    ++antialias_passes_run_;
+  }
+  antialias_pass_ = settings_.antialias_max_passes + 1;
+  return true;
+}
+
+RenderProgress ImageRender::progress() const {
+  return {done_.load(), total_.load(), workers_.rays_published(), antialias_pass_};
+}
+
+Image ImageRender::snapshot() const {
+  std::lock_guard lock(film_mutex_);
+  if (antialias_pass_ > 0) return film_.resolve();
+  // First pass: copy only tiles whose writes are complete.
+  Image copy(film_.width(), film_.height());
+  for (int t = 0; t < layout_.count(); ++t) {
+    if (!tile_done_[size_t(t)].load(std::memory_order_acquire)) continue;
+    const PixelRect r = layout_.rect(t);
+    for (int y = r.y0; y < r.y1; ++y)
+      for (int x = r.x0; x < r.x1; ++x) copy.at(x, y) = film_.at(x, y).value();
+  }
+  return copy;
+}
+
+RenderCheckpoint ImageRender::checkpoint() const {
+  std::lock_guard lock(film_mutex_);
+  RenderCheckpoint c;
+  c.tile_size = layout_.tile_size;
+  c.antialias_pass = antialias_pass_;
+  c.tile_done.resize(size_t(layout_.count()));
+  for (int t = 0; t < layout_.count(); ++t) c.tile_done[size_t(t)] = tile_done_[size_t(t)].load(std::memory_order_acquire);
+  c.supersampled = supersampled_;
+  c.pass_pixels = pass_pixels_;
+  c.pass_done = pass_done_;
+  c.film = Film(film_.width(), film_.height());
+  if (antialias_pass_ > 0) {
+    c.film = film_;
+  } else {
+    for (int t = 0; t < layout_.count(); ++t) {
+      if (!c.tile_done[size_t(t)]) continue;
+      const PixelRect r = layout_.rect(t);
+      for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x) c.film.at(x, y) = film_.at(x, y);
+    }
+  }
+  return c;
+}
+
+RenderStats ImageRender::stats() const {
+  RenderStats s;
+  s.rays = workers_.rays();
+  s.threads = workers_.threads();
+  s.pixels_supersampled = pixels_supersampled_;
+  s.antialias_passes = antialias_passes_run_;
+  s.seconds = seconds_;
+  return s;
+}
+
+Image render_image(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
+                   const RenderSettings& settings, RenderStats* stats) {
+  ImageRender render(camera, width, height, integrator, settings);
+  MJRAY_CHECK(render.run());
+  if (stats) *stats = render.stats();
+  return render.image();
+}
+
+}  // namespace mjray

@@ -1,0 +1,105 @@
+#pragma once
+/// One image rendered on this machine: the first pass over all tiles, then the adaptive
+/// anti-aliasing passes, with stop and resume between units of work. Every pixel is
+/// independent of thread and order, so a stopped render resumes to the same image.
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <stop_token>
+#include <vector>
+
+#include "mjray/camera/pinhole_camera.h"
+#include "mjray/core/image.h"
+#include "mjray/integrator/integrator.h"
+#include "mjray/render/film.h"
+#include "mjray/render/image_sampler.h"
+#include "mjray/render/render_checkpoint.h"
+#include "mjray/render/tile_render.h"
+
+namespace mjray {
+
+/// How to sample and how to schedule the work.
+struct RenderSettings : SamplingSettings {
+  int threads = 0;     ///< 0 = all cores
+  int tile_size = 16;  ///< pixels per tile side
+};
+
+/// What the render did.
+struct RenderStats {
+  RayCounters rays;
+  double seconds = 0;
+  int threads = 1;
+  uint64_t pixels_supersampled = 0;
+  int antialias_passes = 0;
+};
+
+/// Work done so far, in camera samples; `total` grows as anti-aliasing passes find work.
+struct RenderProgress {
+  uint64_t done = 0;
+  uint64_t total = 0;
+  uint64_t rays = 0;       ///< rays of every kind cast so far in this run (updated per tile)
+  int antialias_pass = 0;  ///< 0 during the first pass
+};
+
+/// run() may be stopped from another thread (request_stop); the checkpoint then holds what is
+/// done, and a new ImageRender resumed from it finishes the same image. progress(),
+/// snapshot() and checkpoint() may be called from other threads while run() works.
+class ImageRender {
+ public:
+  /// The camera and integrator must outlive the render.
+  ImageRender(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
+              const RenderSettings& settings);
+
+  /// Continues from a checkpoint of the same scene and settings (call before run). Throws
+  /// SceneError when its size or tiles do not match.
+  void resume_from(const RenderCheckpoint& checkpoint);
+  /// Renders until finished (true) or stopped (false).
+  bool run();
+  /// Asks run() to stop after the tiles and pixel chunks in flight; safe from any thread.
+  void request_stop() { stop_.request_stop(); }
+  /// For tests: stop once this many first-pass tiles have been finished in this run.
+  void stop_after_tiles(int tiles) { stop_after_tiles_ = tiles; }
+
+  RenderProgress progress() const;
+  /// The finished part of the image (unfinished tiles are black).
+  Image snapshot() const;
+  /// The state to resume from after run() returned false.
+  RenderCheckpoint checkpoint() const;
+  /// The image (after run() returned true).
+  Image image() const { return film_.resolve(); }
+  const Film& film() const { return film_; }
+  RenderStats stats() const;
+
+ private:
+  bool run_first_pass();
+  bool run_antialiasing();
+  /// Chooses the pixels of the next anti-aliasing pass; false when there are none.
+  bool plan_pass();
+
+  ImageSampler sampler_;
+  RenderSettings settings_;
+  TileLayout layout_;
+  TileRender workers_;
+  Film film_;
+  std::unique_ptr<std::atomic<uint8_t>[]> tile_done_;
+  std::vector<uint8_t> supersampled_;
+  std::vector<int32_t> pass_pixels_;       // the current anti-aliasing pass's plan
+  std::vector<uint8_t> pass_done_;
+  std::atomic<int> antialias_pass_{0};     // 0: first pass not finished
+  std::stop_source stop_;
+  std::atomic<int> tiles_finished_{0};
+  int stop_after_tiles_ = -1;
+  std::atomic<uint64_t> done_{0}, total_{0};
+  uint64_t pixels_supersampled_ = 0;
+  int antialias_passes_run_ = 0;
+  double seconds_ = 0;
+  mutable std::mutex film_mutex_;          // anti-aliasing writes vs snapshot and checkpoint
+};
+
+/// Renders a whole image in one go (no interruption).
+Image render_image(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
+                   const RenderSettings& settings, RenderStats* stats = nullptr);
+
+}  // namespace mjray
