@@ -8,7 +8,7 @@
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/image_render.h"
-#include "mjray/scene/flatten.h"
+#include "support/test_job.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -42,12 +42,10 @@ TEST_P(CorpusAccelerators, EveryAcceleratorGivesTheBruteForceImage) {
     const double shrink = 72.0 / std::max(job.width, job.height);
     job.width = std::max(1, int(job.width * shrink));
     job.height = std::max(1, int(job.height * shrink));
-    const World world = flatten(job);
-    const PinholeCamera camera(job.camera, job.width, job.height);
-    auto render_with = [&](const AcceleratorOptions& options) {
-      const auto accel = make_accelerator(world.primitives, options);
-      const WhittedIntegrator integrator(world, *accel, {});
-      return render_image(camera, job.width, job.height, integrator, {});
+    auto render_with = [&](const AcceleratorOptions& accel) {
+      JobOptions options;
+      options.accel = accel;
+      return test::render(job, options);
     };
     const Image reference = render_with({"none"});
     for (const AcceleratorOptions& options : accelerators())

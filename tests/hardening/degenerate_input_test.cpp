@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/accel/make_accelerator.h"
 #include "mjray/camera/pinhole_camera.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/image_render.h"
 #include "mjray/scene/flatten.h"
+#include "support/test_job.h"
 #include "support/lua_script_test.h"
 
 namespace mjray {
@@ -29,16 +29,10 @@ std::string render_call(const std::string& camera = "{0,0,10}, {0,0,-1}, {0,1,0}
 int non_finite_pixels(const SceneDescription& scene, int max_depth = 8) {
   int bad = 0;
   for (const RenderJob& job : scene.jobs) {
-    const World world = flatten(job);
     for (const char* kind : {"bvh", "grid", "none"}) {
-      AcceleratorOptions accel_options;
-      accel_options.kind = kind;
-      const auto accel = make_accelerator(world.primitives, accel_options);
-      const WhittedIntegrator integrator(world, *accel, {max_depth, max_depth, 2});
-      RenderSettings settings;
-      settings.threads = 1;
-      const Image image = render_image(PinholeCamera(job.camera, job.width, job.height), job.width, job.height,
-                                       integrator, settings);
+      JobOptions options = test::oracle_options({max_depth, max_depth, 2});
+      options.accel.kind = kind;
+      const Image image = test::render(job, options);
       for (const Color& c : image.pixels())
         if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) ++bad;
     }
@@ -116,14 +110,7 @@ TEST_F(HardeningDegenerate, HugeAndTinyCameraVectorsWorkLikeUnitOnes) {
   const auto huge = load(scene + render_call("{0,0,10}, {0,0,-1e38}, {0,3e38,0}, 50"));
   const auto tiny = load(scene + render_call("{0,0,10}, {0,0,-1e-30}, {0,1e-30,0}, 50"));
   EXPECT_EQ(non_finite_pixels(huge), 0);
-  const auto image_of = [](const SceneDescription& s) {
-    const World world = flatten(s.jobs[0]);
-    const auto accel = make_accelerator(world.primitives, {});
-    const WhittedIntegrator integrator(world, *accel, {});
-    RenderSettings settings;
-    settings.threads = 1;
-    return render_image(PinholeCamera(s.jobs[0].camera, 8, 6), 8, 6, integrator, settings).pixels();
-  };
+  const auto image_of = [](const SceneDescription& s) { return test::TestJob(s, 0, JobOptions{}).render().pixels(); };
   EXPECT_EQ(image_of(huge), image_of(unit));
   EXPECT_EQ(image_of(tiny), image_of(unit));
 }
@@ -177,13 +164,11 @@ TEST_F(HardeningDegenerate, DeepestReflectionAndRefractionDepthsDoNotOverflowThe
       "slab = gr.nh_box('slab', {-50, -50, 0}, 100)\nslab:scale(1, 1, 0.001)\nslab:set_material(clear)\n"
       "root:add_child(slab)\n"
       "gr.render(root, 'out.png', 2, 2, {0,0,1}, {0,0,-1}, {0,1,0}, 1, {0.1,0.1,0.1}, {gr.light({0,0,1}, {1,1,1}, {1,0,0})})\n");
-  const World world = flatten(scene.jobs[0]);
-  const auto accel = make_accelerator(world.primitives, {});
-  const WhittedIntegrator integrator(world, *accel, {1000, 1000, 1});
-  RenderSettings settings;
-  settings.threads = 2;
+  JobOptions options;
+  options.integrator = {1000, 1000, 1};
+  options.render.threads = 2;
   RenderStats stats;
-  const Image image = render_image(PinholeCamera(scene.jobs[0].camera, 2, 2), 2, 2, integrator, settings, &stats);
+  const Image image = test::TestJob(scene, 0, options).render(&stats);
   EXPECT_GT(stats.rays.secondary, 4u * 1000u);
   for (const Color& c : image.pixels()) EXPECT_TRUE(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b));
 }

@@ -12,6 +12,7 @@
 #include "mjray/core/sampling.h"
 #include "mjray/render/image_render.h"
 #include "mjray/scene/flatten.h"
+#include "support/test_job.h"
 #include "support/scene_builder.h"
 
 namespace mjray {
@@ -67,14 +68,14 @@ TEST(StatGlossy, ConcentratedSamplesFailTheTest) {
 struct Penumbra {
   static constexpr float kH = 100, kA = 10, kBlocker = 50;
 
-  static World world(bool blocked) {
+  static RenderJob job(bool blocked) {
     RenderJob job;
     std::vector<std::shared_ptr<const SceneNode>> nodes = {
         test::mesh(test::floor_quad(1000), PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1})};
     if (blocked) nodes.push_back(test::box({-500, kBlocker, -500}, {0, kBlocker + 1, 500}));
     job.root = test::group(nodes);
     job.lights = {AreaLight{{-kA, kH, -kA}, {2 * kA, 0, 0}, {0, 0, 2 * kA}, {1, 1, 1}, {1, 0, 0}}};
-    return flatten(job);
+    return job;
   }
 
   /// The unoccluded fraction of the light seen from (px, 0, 0): the blocker's edge projects to
@@ -85,16 +86,15 @@ struct Penumbra {
   }
 };
 
-Color shade_floor(const World& world, float px, int samples) {
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, {8, 8, samples});
+Color shade_floor(const RenderJob& job, float px, int samples) {
+  const test::TestJob prepared(job, test::oracle_options({8, 8, samples}));
   RandomStream random(7, uint64_t(px * 1000 + 5000), 0);
   RayCounters counters;
-  return integrator.radiance({{px, 1, -30}, normalize(Vector3(0, -1, 30))}, random, counters);
+  return prepared.prepared().integrator().radiance({{px, 1, -30}, normalize(Vector3(0, -1, 30))}, random, counters);
 }
 
 TEST(StatAreaLight, PenumbraMatchesTheAnalyticVisibleFraction) {
-  const World open = Penumbra::world(false), blocked = Penumbra::world(true);
+  const RenderJob open = Penumbra::job(false), blocked = Penumbra::job(true);
   for (const float px : {-8.f, -5.f, -2.f, 0.f, 3.f, 6.5f}) {
     const float ratio = shade_floor(blocked, px, 16).r / shade_floor(open, px, 16).r;
     // 16×16 stratified samples: the error is well below 1/16 per axis.
@@ -103,7 +103,7 @@ TEST(StatAreaLight, PenumbraMatchesTheAnalyticVisibleFraction) {
 }
 
 TEST(StatAreaLight, OneSampleGivesAHardShadow) {
-  const World open = Penumbra::world(false), blocked = Penumbra::world(true);
+  const RenderJob open = Penumbra::job(false), blocked = Penumbra::job(true);
   // With -s 1 the light acts as a point at its centre, visible from x > 0 only.
   EXPECT_EQ(shade_floor(blocked, -3, 1).r, 0);
   EXPECT_EQ(shade_floor(blocked, -0.5f, 1).r, 0);
@@ -143,21 +143,18 @@ double mean_error(const Image& a, const Image& b) {
 
 TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
   const RenderJob job = edge_scene();
-  const World world = flatten(job);
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, {});
-  const PinholeCamera camera(job.camera, job.width, job.height);
-  RenderSettings reference_settings;
-  reference_settings.antialias_samples = 16;
-  reference_settings.antialias_threshold = 1e-6f;  // every pixel that varies at all
-  reference_settings.antialias_max_passes = 100;
-  const Image reference = render_image(camera, job.width, job.height, integrator, reference_settings);
+  JobOptions reference_options = test::oracle_options();
+  reference_options.render.threads = 0;
+  reference_options.render.antialias_samples = 16;
+  reference_options.render.antialias_threshold = 1e-6f;  // every pixel that varies at all
+  reference_options.render.antialias_max_passes = 100;
+  const Image reference = test::render(job, reference_options);
 
-  const Image plain = render_image(camera, job.width, job.height, integrator, {});
-  RenderSettings adaptive;
-  adaptive.antialias_samples = 4;
+  const Image plain = test::render(job);
+  JobOptions adaptive = test::oracle_options();
+  adaptive.render.antialias_samples = 4;
   RenderStats stats;
-  const Image smoothed = render_image(camera, job.width, job.height, integrator, adaptive, &stats);
+  const Image smoothed = test::TestJob(job, adaptive).render(&stats);
 
   EXPECT_LT(mean_error(smoothed, reference), 0.6 * mean_error(plain, reference));
   EXPECT_GT(stats.pixels_supersampled, 0u);
@@ -167,17 +164,12 @@ TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
 
 TEST(StatAntialiasing, ImageIsIdenticalAcrossThreadCounts) {
   const RenderJob job = edge_scene();
-  const World world = flatten(job);
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, {});
-  const PinholeCamera camera(job.camera, job.width, job.height);
-  RenderSettings settings;
-  settings.antialias_samples = 3;
-  settings.threads = 1;
-  const Image one = render_image(camera, job.width, job.height, integrator, settings);
-  settings.threads = 3;
-  settings.tile_size = 7;
-  EXPECT_EQ(render_image(camera, job.width, job.height, integrator, settings).pixels(), one.pixels());
+  JobOptions options = test::oracle_options();
+  options.render.antialias_samples = 3;
+  const Image one = test::render(job, options);
+  options.render.threads = 3;
+  options.render.tile_size = 7;
+  EXPECT_EQ(test::render(job, options).pixels(), one.pixels());
 }
 
 }  // namespace

@@ -145,3 +145,94 @@ TEST(ClosedForm, ImageIsIdenticalForAnyThreadCountAndTileSize) {
 
 }  // namespace
 }  // namespace mjray
+
+namespace mjray {
+namespace {
+
+/// A dark light: only ambient light and what the specular lobes bring.
+const PointLight kDark{{0, 50, 0}, {0, 0, 0}, {1, 0, 0}};
+
+TEST(ClosedForm, FresnelSlabReflectsTheNormalIncidenceReflectance) {
+  // Straight down onto a clear Fresnel slab, the mirror ray sees the zenith colour Z. With
+  // -f 1 the refracted ray may not leave the slab again, so what comes back is F(0)·Z with
+  // F(0) = ((n1 − n2)/(n1 + n2))², through the whole integrator.
+  for (const float n : {1.33f, 1.5f, 2.4f}) {
+    RenderJob job;
+    job.root = test::box({-50, -1, -50}, {50, 0, 50}, FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, n});
+    job.lights = {kDark};
+    const test::TestJob prepared(job, test::oracle_options({8, 1, 1}));
+    const Color seen = prepared.radiance({{0.3f, 5, -0.2f}, {0, -1, 0}});
+    const float f0 = ((1 - n) / (1 + n)) * ((1 - n) / (1 + n));
+    const Color zenith = Background{}.zenith;
+    EXPECT_NEAR(seen.r, f0 * zenith.r, 1e-5f) << "n = " << n;
+    EXPECT_NEAR(seen.g, f0 * zenith.g, 1e-5f) << "n = " << n;
+    EXPECT_NEAR(seen.b, f0 * zenith.b, 1e-5f) << "n = " << n;
+  }
+}
+
+TEST(ClosedForm, TiltedVertexNormalsShadeWithTheirNormal) {
+  // A flat floor whose vertex normals all lean the same way: the diffuse term follows the
+  // interpolated normal, kd·max(0, n·l)·I, not the face's.
+  const Normal3 tilted = normalize(Normal3(0.6f, 1, -0.3f));
+  TriangleMesh quad = test::floor_quad(100);
+  quad.normals = {tilted};
+  for (auto& triangle : quad.triangles)
+    for (MeshCorner& corner : triangle) corner.normal = 0;
+  const Color kd(0.7f, 0.5f, 0.3f);
+  RenderJob job;
+  job.root = test::mesh(quad, PhongMaterial{kd, {0, 0, 0}, 1});
+  const PointLight light{{-3, 4, 2}, {1, 0.9f, 0.8f}, {1, 0, 0}};
+  job.lights = {light};
+  const test::TestJob prepared(job);
+  for (const Point3 target : {Point3(0.5f, 0, 0.25f), Point3(-2, 0, 1), Point3(1.5f, 0, -3)}) {
+    const Color seen = prepared.radiance({target + Vector3(0, 3, 0), {0, -1, 0}});
+    const Vector3 l = normalize(light.position - target);
+    const Color expected = kd * light.colour * std::max(0.f, dot(tilted, l));
+    EXPECT_NEAR(seen.r, expected.r, 1e-5f);
+    EXPECT_NEAR(seen.g, expected.g, 1e-5f);
+    EXPECT_NEAR(seen.b, expected.b, 1e-5f);
+    // The face's own normal would give a clearly different value.
+    EXPECT_GT(std::abs(seen.r - kd.r * light.colour.r * l.y), 0.05f);
+  }
+}
+
+/// The share of directions, uniform over the cone of half-angle alpha around +y, that meet the
+/// plane y = h at x > 0, seen from (p, 0, 0): numerical quadrature over the cone.
+double white_fraction(double p, double h, double alpha) {
+  constexpr int kRings = 400, kSectors = 800;
+  const double cos_max = std::cos(alpha);
+  double white = 0;
+  for (int i = 0; i < kRings; ++i) {
+    const double cos_theta = 1 - (i + 0.5) / kRings * (1 - cos_max);  // uniform in cos θ
+    const double sin_theta = std::sqrt(1 - cos_theta * cos_theta);
+    for (int j = 0; j < kSectors; ++j) {
+      const double phi = 2 * std::numbers::pi * (j + 0.5) / kSectors;
+      white += p + h * sin_theta * std::cos(phi) / cos_theta > 0 ? 1 : 0;
+    }
+  }
+  return white / (kRings * kSectors);
+}
+
+TEST(ClosedForm, GlossyReflectionBlursAStepEdgeOverItsCone) {
+  // A glossy floor under a ceiling that is white (ambient 1, kd 1) for x > 0 and black for
+  // x < 0. Straight down at offset p from the edge, the floor shows the cone's white share.
+  const float height = 10, reflectivity = 0.8f;
+  const double alpha = (1 - reflectivity) * std::numbers::pi / 4;
+  RenderJob job;
+  job.root = test::group({test::box({-100, -1, -100}, {100, 0, 100},
+                                    GlossyMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, reflectivity, 1024}),
+                          test::box({0, height, -100}, {100, height + 1, 100}, PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1}),
+                          test::box({-100, height, -100}, {0, height + 1, 100}, PhongMaterial{{0, 0, 0}, {0, 0, 0}, 1})});
+  job.ambient = {1, 1, 1};
+  job.lights = {kDark};
+  const test::TestJob prepared(job);
+  for (const double offset : {-0.8, -0.5, -0.2, 0.0, 0.3, 0.6, 1.2}) {
+    const double p = height * std::tan(offset * alpha);  // the mirror ray misses the edge by offset·alpha
+    const Color seen = prepared.radiance({{float(p), 1, 0}, {0, -1, 0}});
+    const double expected = reflectivity * white_fraction(p, height, alpha);
+    EXPECT_NEAR(seen.r, expected, 0.01) << "offset " << offset << " of the cone";
+  }
+}
+
+}  // namespace
+}  // namespace mjray

@@ -23,6 +23,7 @@
 #include "mjray/scene/flatten.h"
 #include "mjray/texture/perlin_noise.h"
 #include "mjray/texture/texture.h"
+#include "support/test_job.h"
 #include "support/scene_builder.h"
 #include "support/test_paths.h"
 
@@ -418,10 +419,7 @@ TEST(TextureShading, TextureReplacesKdForAmbientAndDiffuse) {
   job.root = test::mesh(test::floor_quad(100), m);
   job.ambient = {0.5f, 1, 1};
   job.lights = {PointLight{{0, 3, 0}, {0, 0, 0}, {1, 0, 0}}};
-  const World world = flatten(job);
-  const BruteForce accel(world.primitives);
-  const WhittedIntegrator integrator(world, accel, {});
-  const Image image = render_image(PinholeCamera(job.camera, 9, 9), 9, 9, integrator, {});
+  const Image image = test::render(job);
   // Pixel centres land 1.28 units apart, clear of the cell edges; the centre one at the origin.
   const double half = std::tan(std::numbers::pi / 6) * 10;
   for (int j = 0; j < 9; ++j)
@@ -435,10 +433,7 @@ TEST(TextureShading, TextureReplacesKdForAmbientAndDiffuse) {
   // A point light adds kd·cosθ·I with the texture's kd too.
   job.ambient = {0, 0, 0};
   job.lights = {PointLight{{0, 3, 0}, {1, 1, 1}, {1, 0, 0}}};
-  const World lit = flatten(job);
-  const BruteForce lit_accel(lit.primitives);
-  const WhittedIntegrator lit_integrator(lit, lit_accel, {});
-  const Image lit_image = render_image(PinholeCamera(job.camera, 9, 9), 9, 9, lit_integrator, {});
+  const Image lit_image = test::render(job);
   expect_color_near(lit_image.at(4, 4), Color(0.2f, 0.4f, 0.6f), 1e-5f);
 }
 
