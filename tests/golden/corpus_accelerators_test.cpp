@@ -8,23 +8,13 @@
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/image_render.h"
+#include "support/corpus_scenes.h"
 #include "support/test_job.h"
 #include "support/test_paths.h"
 
 namespace mjray {
 namespace {
 
-const char* const kCorpusScenes[] = {
-    "hmhealey-cs488a4/data/hier.lua",           "hmhealey-cs488a4/data/instance.lua",
-    "hmhealey-cs488a4/data/macho-cows.lua",     "hmhealey-cs488a4/data/nonhier.lua",
-    "hmhealey-cs488a4/data/nonhier2.lua",       "hmhealey-cs488a4/data/sample.lua",
-    "hmhealey-cs488a4/data/simple-cows.lua",    "hmhealey-cs488a4/data/simple.lua",
-    "themarkrizkallah-cs488/A4/Assets/hier.lua", "themarkrizkallah-cs488/A4/Assets/instance.lua",
-    "themarkrizkallah-cs488/A4/Assets/macho-cows.lua", "themarkrizkallah-cs488/A4/Assets/mucho-macho-cows.lua",
-    "themarkrizkallah-cs488/A4/Assets/nonhier.lua", "themarkrizkallah-cs488/A4/Assets/nonhier2.lua",
-    "themarkrizkallah-cs488/A4/Assets/sample.lua", "themarkrizkallah-cs488/A4/Assets/simple-cows.lua",
-    "themarkrizkallah-cs488/A4/Assets/simple.lua",
-};
 
 std::vector<AcceleratorOptions> accelerators() {
   std::vector<AcceleratorOptions> all = {{"grid", 1}, {"grid", 8}, {"grid", 37}, {"grid", 0}, {"bvh"}};
@@ -32,7 +22,7 @@ std::vector<AcceleratorOptions> accelerators() {
   return all;
 }
 
-class CorpusAccelerators : public ::testing::TestWithParam<const char*> {};
+class CorpusAccelerators : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CorpusAccelerators, EveryAcceleratorGivesTheBruteForceImage) {
   MJRAY_REQUIRE_SHARED(shared);
@@ -54,7 +44,7 @@ TEST_P(CorpusAccelerators, EveryAcceleratorGivesTheBruteForceImage) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, CorpusAccelerators, ::testing::ValuesIn(kCorpusScenes),
+INSTANTIATE_TEST_SUITE_P(Corpus, CorpusAccelerators, ::testing::ValuesIn(test::corpus_scenes()),
                          [](const auto& info) {
                            std::string name = info.param;
                            for (char& c : name)

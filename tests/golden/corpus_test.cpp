@@ -1,5 +1,6 @@
 // Every CS 488 corpus scene renders unchanged through the real program, into an image of the
-// size it asks for that shows something besides the background.
+// size it asks for. What the images show is checked against references in
+// reference_images_test.cpp.
 
 #include <cctype>
 #include <cstdlib>
@@ -61,10 +62,6 @@ TEST_P(CorpusRender, RendersUnchangedToTheSizeItAsksFor) {
   const Image image = read_image(out / scene.image);
   EXPECT_EQ(image.width(), scene.width);
   EXPECT_EQ(image.height(), scene.height);
-  // Not blank: many distinct colours, and not all equal to the top-left (background) pixel.
-  std::set<std::tuple<float, float, float>> colours;
-  for (const Color& c : image.pixels()) colours.insert({c.r, c.g, c.b});
-  EXPECT_GT(colours.size(), 50u) << "the image looks blank";
   std::filesystem::remove_all(out);
 }
 
