@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Renders every CS 488 corpus scene (../shared/corpus) and every shipped scene (with the
+# options its header names) with the mjray binary BINARY into OUTDIR, and writes the md5 of
+# every image to OUTDIR.md5. Compare two builds (e.g. before and after a refactoring that must
+# not change images):
+#   scripts/render_all_scenes.sh /tmp/old/mjray /tmp/before && scripts/render_all_scenes.sh build/mjray /tmp/after
+#   diff /tmp/before.md5 /tmp/after.md5
+set -uo pipefail
+bin=$(realpath "$1"); out=$(realpath -m "$2"); mkdir -p "$out"
+cd "$(dirname "$0")/.."
+shared=${MJRAY_SHARED_DIR:-../shared}
+status=0
+if [ -d "$shared/corpus/cs488" ]; then
+  for s in $(find "$shared/corpus/cs488" -name '*.lua' | sort); do
+    grep -q 'gr.render' "$s" || continue  # modules such as readobj.lua
+    name=$(echo "${s#"$shared"/corpus/cs488/}" | sed 's#[/.]#_#g')
+    mkdir -p "$out/$name"
+    "$bin" --quiet --outdir "$out/$name" "$s" 2>"$out/$name.log" || { echo "failed: $s"; status=1; }
+  done
+fi
+for s in scenes/*.lua scenes/features/*.lua; do
+  opts=$(grep -m1 -o 'Render: build/mjray[^(]*' "$s" | sed 's#Render: build/mjray##; s#scenes/[^ ]*\.lua##')
+  name=$(basename "$s" .lua)
+  mkdir -p "$out/$name"
+  # shellcheck disable=SC2086
+  "$bin" --quiet $opts --outdir "$out/$name" "$s" 2>"$out/$name.log" || { echo "failed: $s"; status=1; }
+done
+(cd "$out" && find . -name '*.png' | sort | xargs md5sum) > "$out.md5"
+echo "$(wc -l < "$out.md5") images; md5s in $out.md5"
+exit $status
