@@ -56,4 +56,9 @@ inline TriangleMesh floor_quad(float s) {
 /// A closed, welded UV sphere of radius 1 (rings × segments).
 TriangleMesh uv_sphere(int rings, int segments);
 
+/// The surface of revolution about +y of a closed outline of (radius, height) points, walked
+/// with the solid on its left: each outline segment a band of `segments` quads, with normals
+/// smooth around the axis and flat along the outline.
+TriangleMesh lathe(const std::vector<Point2>& outline, int segments);
+
 }  // namespace mjray::test

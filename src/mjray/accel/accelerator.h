@@ -11,6 +11,21 @@
 
 namespace mjray {
 
+/// Decides, for a hit of a filtered occlusion query, whether the ray is blocked there
+/// (Embree's occlusion-filter shape). It sees the hits on transmissive primitives
+/// (PrimitiveSet::transmissive), and on every primitive when `sees_opaque`; other hits block
+/// at once. Hits come in no particular order, exact (as intersect() computes them), and a
+/// primitive may be reported more than once.
+class HitFilter {
+ public:
+  explicit HitFilter(bool sees_opaque = false) : sees_opaque(sees_opaque) {}
+  virtual ~HitFilter() = default;
+  /// True stops the query: the ray counts as occluded.
+  virtual bool blocks(const Hit& hit) = 0;
+
+  const bool sees_opaque;
+};
+
 /// A spatial index over a PrimitiveSet. Implementations: none (brute force), grid, bvh,
 /// embree. All are thread-safe for queries and never allocate or throw on the ray path.
 class Accelerator {
@@ -20,6 +35,10 @@ class Accelerator {
   virtual std::optional<Hit> intersect(const Ray& ray, Interval t_range) const = 0;
   /// Whether anything is hit with t in (0, t_max) (shadow rays; any hit will do).
   virtual bool occluded(const Ray& ray, float t_max) const = 0;
+  /// Whether something blocks the ray for t in `t_range`: a primitive the filter does not see,
+  /// or one whose hit it says blocks. Without a blocker, every primitive the filter sees that
+  /// the ray crosses has been shown to it.
+  virtual bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const = 0;
   /// Bounds of all primitives.
   virtual Bounds3 bounds() const = 0;
   /// The name users pass to --accel.

@@ -21,4 +21,12 @@ bool BruteForce::occluded(const Ray& ray, float t_max) const {
   return false;
 }
 
+bool BruteForce::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
+  const uint32_t n = prims_.size();
+  for (uint32_t prim = 0; prim < n; ++prim)
+    if (const auto hit = prims_.intersect(prim, ray, t_range))
+      if (!prims_.filtered(prim, filter.sees_opaque) || filter.blocks(*hit)) return true;
+  return false;
+}
+
 }  // namespace mjray

@@ -12,6 +12,7 @@ class BruteForce final : public Accelerator {
   explicit BruteForce(const PrimitiveSet& prims) : prims_(prims), bounds_(prims.bounds()) {}
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
+  bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "none"; }
   size_t memory_bytes() const override { return 0; }

@@ -114,22 +114,28 @@ size_t Bvh::memory_bytes() const {
   return nodes_.size() * sizeof(BvhWideNode) + leaf_prims_.size() * sizeof(LeafPrimitive);
 }
 
-template <bool kAnyHit>
-bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit) const {
+template <BvhQuery kQuery>
+bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
   if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
   const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_};
 #if MJRAY_BVH_HAS_AVX
-  if (use_avx_) return avx::traverse<kAnyHit>(view, ray, t_range, hit);
+  if (use_avx_) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
 #endif
-  return baseline::traverse<kAnyHit>(view, ray, t_range, hit);
+  return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
 }
 
 std::optional<Hit> Bvh::intersect(const Ray& ray, Interval t_range) const {
   Hit hit{};
-  if (!trace<false>(ray, t_range, &hit)) return std::nullopt;
+  if (!trace<BvhQuery::kClosest>(ray, t_range, &hit, nullptr)) return std::nullopt;
   return hit;
 }
 
-bool Bvh::occluded(const Ray& ray, float t_max) const { return trace<true>(ray, {0, t_max}, nullptr); }
+bool Bvh::occluded(const Ray& ray, float t_max) const {
+  return trace<BvhQuery::kAny>(ray, {0, t_max}, nullptr, nullptr);
+}
+
+bool Bvh::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
+  return trace<BvhQuery::kFiltered>(ray, t_range, nullptr, &filter);
+}
 
 }  // namespace mjray

@@ -33,6 +33,13 @@ struct LeafPrimitive {
 };
 static_assert(sizeof(LeafPrimitive) == 40);
 
+/// What a traversal looks for.
+enum class BvhQuery {
+  kClosest,   ///< the nearest hit
+  kAny,       ///< any hit
+  kFiltered,  ///< a hit on an opaque primitive, or one a HitFilter says blocks
+};
+
 /// Which SIMD instructions traversal may use.
 enum class BvhSimd {
   kBest,      ///< 8-wide AVX slab tests where the CPU has AVX, else the baseline
@@ -48,6 +55,7 @@ class Bvh final : public Accelerator {
 
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
+  bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "bvh"; }
   size_t memory_bytes() const override;
@@ -60,8 +68,8 @@ class Bvh final : public Accelerator {
   bool uses_avx() const { return use_avx_; }
 
  private:
-  template <bool kAnyHit>
-  bool trace(const Ray& ray, Interval t_range, Hit* hit) const;
+  template <BvhQuery kQuery>
+  bool trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const;
 
   const PrimitiveSet& prims_;
   uint32_t triangle_count_ = 0;

@@ -84,11 +84,12 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
   return mask;
 }
 
-/// Closest hit (kAnyHit false, written to *hit) or any hit for t in `t_range`; returns
-/// whether there was one. Children are visited nearest entry first, and popped entries the
-/// ray cannot reach before its current nearest hit are skipped.
-template <bool kAnyHit>
-bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
+/// The query kQuery for t in `t_range`: the closest hit (written to *hit), any hit, or a
+/// blocking hit (opaque, or one `filter` says blocks); returns whether there was one.
+/// Children are visited nearest entry first, and popped entries the ray cannot reach before
+/// its current nearest hit are skipped.
+template <BvhQuery kQuery>
+bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) {
   const float t_min = t_range.min;
   float t_max = t_range.max;
   const BoxRay box_ray(ray);
@@ -123,19 +124,23 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
     } else {
       for (uint32_t i = current.child, end = current.child + current.count; i < end; ++i) {
         const LeafPrimitive& leaf = bvh.leaves[i];
+        Hit h;
         if (leaf.prim < bvh.triangle_count) {
-          const auto h = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
-          if (!h) continue;
-          if constexpr (kAnyHit) return true;
-          t_max = h->t;
-          *hit = {h->t, leaf.prim, h->b1, h->b2};
+          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
+          if (!tri) continue;
+          h = {tri->t, leaf.prim, tri->b1, tri->b2};
         } else {
-          const auto h = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
-          if (!h) continue;
-          if constexpr (kAnyHit) return true;
-          t_max = h->t;
-          *hit = *h;
+          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
+          if (!shape) continue;
+          h = *shape;
         }
+        if constexpr (kQuery == BvhQuery::kAny) return true;
+        if constexpr (kQuery == BvhQuery::kFiltered) {
+          if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks(h)) return true;
+          continue;
+        }
+        t_max = h.t;
+        *hit = h;
         found = true;
       }
     }

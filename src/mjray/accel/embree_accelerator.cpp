@@ -76,13 +76,48 @@ void shape_intersect(const RTCIntersectFunctionNArguments* args) {
   }
 }
 
+/// The context of a filtered occlusion query: Embree's own first, so that callbacks can get
+/// back to the rest from the pointer Embree passes them.
+struct FilterContext {
+  RTCIntersectContext embree;
+  const PrimitiveSet* prims;
+  HitFilter* filter;
+};
+
+/// Whether the hit of a filtered query on transmissive `prim` blocks: the filter sees the hit
+/// as mjray's own test computes it; a hit that test does not confirm is passed over.
+bool filtered_blocks(const FilterContext& context, uint32_t prim, const Ray& ray, Interval t_range) {
+  const auto exact = context.prims->intersect(prim, ray, t_range);
+  return exact && context.filter->blocks(*exact);
+}
+
 void shape_occluded(const RTCOccludedFunctionNArguments* args) {
   const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
   const uint32_t prim = uint32_t(prims.triangles.size()) + args->primID;
+  const auto* context = reinterpret_cast<const FilterContext*>(args->context);
+  const bool filtered = args->context->filter != nullptr && prims.filtered(prim, context->filter->sees_opaque);
   for (unsigned i = 0; i < args->N; ++i) {
     if (!args->valid[i]) continue;
-    if (prims.intersect_shape(prim, ray_of(args->ray, args->N, i), range_of(args->ray, args->N, i)))
-      RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;  // Embree's "occluded" mark
+    const Ray ray = ray_of(args->ray, args->N, i);
+    const Interval range = range_of(args->ray, args->N, i);
+    const auto hit = prims.intersect_shape(prim, ray, range);
+    if (!hit) continue;
+    if (filtered && !context->filter->blocks(*hit)) continue;
+    RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;  // Embree's "occluded" mark
+  }
+}
+
+/// The context filter of filtered occlusion queries, for triangles (shapes decide in their
+/// own callback): rejecting a hit (valid = 0) lets the ray go on.
+void triangle_occlusion_filter(const RTCFilterFunctionNArguments* args) {
+  const auto& context = *reinterpret_cast<const FilterContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1 || RTCHitN_geomID(args->hit, args->N, i) != kTriangleGeometry) continue;
+    const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+    if (!context.prims->filtered(prim, context.filter->sees_opaque)) continue;
+    const Interval range{RTCRayN_tnear(args->ray, args->N, i) <= kTNear ? 0 : RTCRayN_tnear(args->ray, args->N, i),
+                         RTCRayN_tfar(args->ray, args->N, i)};
+    if (!filtered_blocks(context, prim, ray_of(args->ray, args->N, i), range)) args->valid[i] = 0;
   }
 }
 
@@ -117,8 +152,9 @@ EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, boo
   rtcSetDeviceMemoryMonitorFunction(device_, count_device_bytes, &device_bytes_);
   scene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  // Robust mode makes Embree's triangle test watertight, as mjray's own (Woop et al.) is.
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  // Robust mode makes Embree's triangle test watertight, as mjray's own (Woop et al.) is;
+  // filtered occlusion queries need the context filter.
+  rtcSetSceneFlags(scene_, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
 
   // Triangles: one geometry over the world-space vertices, in primitive order.
   if (!prims.triangles.empty()) {
@@ -202,6 +238,16 @@ bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
   rtcInitIntersectContext(&context);
   RTCRay r = embree_ray(ray, {0, t_max});
   rtcOccluded1(scene_, &context, &r);
+  return r.tfar < 0;
+}
+
+bool EmbreeAccelerator::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
+  if (!valid_query(ray, t_range.max)) return false;
+  FilterContext context{{}, &prims_, &filter};
+  rtcInitIntersectContext(&context.embree);
+  context.embree.filter = prims_.any_transmissive() || filter.sees_opaque ? triangle_occlusion_filter : nullptr;
+  RTCRay r = embree_ray(ray, t_range);
+  rtcOccluded1(scene_, &context.embree, &r);
   return r.tfar < 0;
 }
 

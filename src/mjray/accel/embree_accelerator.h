@@ -29,6 +29,7 @@ class EmbreeAccelerator final : public Accelerator {
 
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
+  bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "embree"; }
   /// Bytes Embree's device holds (its memory monitor), which is mostly the scene's BVH.

@@ -215,17 +215,28 @@ bool UniformGrid::occluded(const Ray& ray, float t_max) const {
   return traverse<true>(ray, {0, t_max}).has_value();
 }
 
+bool UniformGrid::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
+  return traverse<true>(ray, t_range, &filter).has_value();
+}
+
 template <bool kAnyHit>
-std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range) const {
+std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range, HitFilter* filter) const {
   std::optional<Hit> nearest;
   const float t_min = t_range.min;
   float t_max = t_range.max;
   if (!(t_max > t_min) || !is_finite(ray.origin) || !is_finite(ray.direction)) return nearest;
 
+  // A hit ends an any-hit query unless the filter lets the ray pass a transmissive primitive.
+  const auto blocks = [&](const Hit& hit) {
+    return !filter || !primitives_.filtered(hit.prim, filter->sees_opaque) || filter->blocks(hit);
+  };
   // Test the primitives that live outside the voxels.
   for (const uint32_t prim : unbounded_) {
     if (auto hit = primitives_.intersect(prim, ray, {t_min, t_max})) {
-      if constexpr (kAnyHit) return hit;
+      if constexpr (kAnyHit) {
+        if (blocks(*hit)) return hit;
+        continue;
+      }
       t_max = hit->t;
       nearest = hit;
     }
@@ -299,7 +310,10 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range) const
           hit = primitives_.intersect_shape(prim, ray, {t_min, t_max});
         }
         if (hit) {
-          if constexpr (kAnyHit) return hit;
+          if constexpr (kAnyHit) {
+            if (blocks(*hit)) return hit;
+            continue;
+          }
           t_max = hit->t;
           t_stop = std::min(t_stop, t_max);
           nearest = hit;

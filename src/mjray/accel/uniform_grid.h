@@ -27,6 +27,7 @@ class UniformGrid final : public Accelerator {
 
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
+  bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "grid"; }
   size_t memory_bytes() const override;
@@ -39,8 +40,9 @@ class UniformGrid final : public Accelerator {
   size_t reference_count() const { return prims_.size(); }
 
  private:
+  /// The closest hit (filter null, kAnyHit false), any hit, or a blocking hit (with filter).
   template <bool kAnyHit>
-  std::optional<Hit> traverse(const Ray& ray, Interval t_range) const;
+  std::optional<Hit> traverse(const Ray& ray, Interval t_range, HitFilter* filter = nullptr) const;
 
   const PrimitiveSet& primitives_;
   uint32_t triangle_count_ = 0;

@@ -29,6 +29,15 @@ class PrimitiveSet {
   std::vector<Point3> vertices;                     ///< world space, of every mesh instance
   std::vector<std::array<uint32_t, 3>> triangles;   ///< indices into vertices
   std::vector<ShapeInstance> shapes;
+  /// One flag per primitive when any primitive may let shadow rays through (glass); empty when
+  /// every primitive is opaque.
+  std::vector<uint8_t> transmissive_flags;
+
+  /// Whether shadow rays may continue past primitive `prim`.
+  bool transmissive(uint32_t prim) const { return !transmissive_flags.empty() && transmissive_flags[prim]; }
+  bool any_transmissive() const { return !transmissive_flags.empty(); }
+  /// Whether a filtered query asks `filter_sees_opaque`-filters about primitive `prim`.
+  bool filtered(uint32_t prim, bool filter_sees_opaque) const { return filter_sees_opaque || transmissive(prim); }
 
   uint32_t size() const { return uint32_t(triangles.size() + shapes.size()); }
   bool is_triangle(uint32_t prim) const { return prim < triangles.size(); }

@@ -10,6 +10,9 @@ namespace mjray {
 /// Everything the integrator needs to shade a hit, computed once for the closest hit.
 struct SurfaceInteraction {
   Point3 point;              ///< world space
+  /// Per-axis bound on the floating-point error of `point` (world space): rays leave the
+  /// surface from outside this box (spawn_ray.h).
+  Vector3 point_error;
   Normal3 geometric_normal;  ///< unit, world space, as the surface is oriented (not flipped)
   Normal3 shading_normal;    ///< unit, world space, on the same side as geometric_normal
   Point2 uv;

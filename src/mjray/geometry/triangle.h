@@ -2,6 +2,7 @@
 /// Watertight ray/triangle intersection (Woop, Benthin and Wald 2013): rays through a shared
 /// edge or vertex hit at least one of the triangles that share it.
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -11,6 +12,14 @@
 #include "mjray/core/vector.h"
 
 namespace mjray {
+
+namespace triangle_error {
+// γ(n) = n·u / (1 − n·u), u = 2⁻²⁴, for the error bound of t.
+inline constexpr float kU = 0.5f * 1.1920928955078125e-7f;
+inline constexpr float gamma2 = (2 * kU) / (1 - 2 * kU);
+inline constexpr float gamma3 = (3 * kU) / (1 - 3 * kU);
+inline constexpr float gamma5 = (5 * kU) / (1 - 5 * kU);
+}  // namespace triangle_error
 
 /// Where a ray meets a triangle: distance and barycentric weights of p1 and p2
 /// (the weight of p0 is 1 − b1 − b2).
@@ -51,6 +60,7 @@ inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, I
                                                      const std::array<float, 3>& p0,
                                                      const std::array<float, 3>& p1,
                                                      const std::array<float, 3>& p2) {
+  using namespace triangle_error;
   if (!ray.valid) return std::nullopt;
   const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
   const auto& o = ray.origin;
@@ -85,6 +95,23 @@ inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, I
   const float inv_det = 1 / det;
   const float t = t_scaled * inv_det;
   if (!(t > t_min) || !std::isfinite(t)) return std::nullopt;
+
+  // Compute a bound δt on the rounding error of t (pbrt-v4) and reject hits that may lie at
+  // or behind the origin: a ray leaving a surface then never re-hits it, however large the
+  // triangle is against its offset.
+  // (In double: a tiny direction component makes these products overflow a float.)
+  // The shear's error scales with the unscaled z; t's with the scaled one.
+  const double max_z = std::max({std::abs(az), std::abs(bz), std::abs(cz)});
+  const double max_zt = max_z * double(std::abs(ray.sz));
+  const double max_xt = std::max({std::abs(ax), std::abs(bx), std::abs(cx)});
+  const double max_yt = std::max({std::abs(ay), std::abs(by), std::abs(cy)});
+  const double delta_z = gamma3 * max_zt;
+  const double delta_x = gamma5 * (max_xt + max_z);
+  const double delta_y = gamma5 * (max_yt + max_z);
+  const double delta_e = 2 * (gamma2 * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+  const double max_e = std::max({std::abs(e0), std::abs(e1), std::abs(e2)});
+  const double delta_t = 3 * (gamma3 * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / std::abs(double(det));
+  if (!(double(t) > delta_t)) return std::nullopt;
   return TriangleHit{t, e1 * inv_det, e2 * inv_det};
 }
 

@@ -4,6 +4,8 @@
 
 #include "mjray/core/sampling.h"
 #include "mjray/geometry/spawn_ray.h"
+#include "mjray/integrator/closest_surface.h"
+#include "mjray/integrator/shadow_transmittance.h"
 
 namespace mjray {
 
@@ -14,9 +16,9 @@ Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, RayCount
 
 Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random,
                                RayCounters& counters) const {
-  const auto hit = accel_.intersect(ray, {});
-  if (!hit) return world_.background_radiance(ray.direction);
-  const SurfaceInteraction si = world_.interaction(ray, *hit);
+  const auto found = closest_surface(world_, accel_, ray);
+  if (!found) return world_.background_radiance(ray.direction);
+  const SurfaceInteraction& si = *found;
   const Material& material = world_.materials[si.material];
   // Shade with the normal that faces the viewer.
   const Vector3 wo = normalize(-ray.direction);
@@ -64,8 +66,15 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
   ++counters.shadow;
-  if (accel_.occluded(spawn_ray_to(si, sample.position), kShadowTMax)) return {};
-  return local.phong(frame, l, n_dot_l) * sample.intensity;
+  const Ray shadow = spawn_ray_to(si, sample.position);
+  if (!world_.primitives.any_transmissive()) {
+    if (accel_.occluded(shadow, kShadowTMax)) return {};
+    return local.phong(frame, l, n_dot_l) * sample.intensity;
+  }
+  // Through glass: what the transmissive surfaces on the way let pass.
+  const Color kept = shadow_ray_transmittance(world_, accel_, shadow, kShadowTMax);
+  if (kept.is_black()) return {};
+  return local.phong(frame, l, n_dot_l) * sample.intensity * kept;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
@@ -85,13 +94,41 @@ Color WhittedIntegrator::specular_light(const SurfaceInteraction& si, const Shad
                                         RayCounters& counters) const {
   Color result;
   for (const SpecularLobe& lobe : lobes) {
-    if (!within_depth(lobe.kind, depth)) continue;
     const Depth next = depth.after(lobe.kind, lobe.weight);
+    // Past the depth limit a lobe still shows what lies along it, never black; a limit of 0
+    // turns that kind of lobe off.
+    if (!within_depth(lobe.kind, depth)) {
+      if (depth_limit(lobe.kind) > 0)
+        result += lobe.weight * terminal_light(si, lobe.direction, next.weight, random, counters);
+      continue;
+    }
     // A glossy lobe blurs only the first reflection (as the original): deeper ones are mirrors.
     if (lobe.samples > 1 && depth.reflection == 0)
       result += glossy_light(si, frame, lobe, next, random, counters);
     else
       result += lobe.weight * trace_secondary(si, lobe.direction, next, random, counters);
+  }
+  return result;
+}
+
+Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const Vector3& direction, float weight,
+                                        RandomStream& random, RayCounters& counters) const {
+  constexpr float kMinWeight = 0.5f / 255;  // as trace_secondary's adaptive depth control
+  constexpr int kMaxCrossings = 16;
+  Color kept{1, 1, 1}, result;
+  SurfaceInteraction from = origin;
+  for (int crossing = 0; crossing < kMaxCrossings && weight * kept.max_component() >= kMinWeight; ++crossing) {
+    ++counters.secondary;
+    const Ray ray = spawn_ray(from, direction);
+    const auto found = closest_surface(world_, accel_, ray);
+    if (!found) return result + kept * world_.background_radiance(direction);
+    const Material& material = world_.materials[found->material];
+    const Vector3 wo = normalize(-direction);
+    const ShadingFrame frame{wo, face_forward(found->shading_normal, wo), found->geometric_normal};
+    result += kept * direct_light(*found, frame, local_shading(material, *found), random, counters);
+    if (!transmissive(material)) break;
+    kept = kept * shadow_transmittance(material, frame);
+    from = *found;
   }
   return result;
 }

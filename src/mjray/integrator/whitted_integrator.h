@@ -17,7 +17,9 @@ struct IntegratorSettings {
 
 /// Whitted's recursion as CS 488 and the original project define it: local Phong shading
 /// with shadow rays at every hit, plus the light arriving along each material's specular
-/// lobes. Asks materials and lights; names none of them.
+/// lobes, to -r reflections and -f refractions deep; a lobe past its limit ends in one
+/// straight look along it (terminal_light) rather than black. Shadow rays pass through
+/// transmissive surfaces (shadow_transmittance.h). Asks materials and lights; names none.
 class WhittedIntegrator final : public Integrator {
  public:
   WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings)
@@ -53,12 +55,19 @@ class WhittedIntegrator final : public Integrator {
   /// The mean of a glossy lobe's rays over its cone.
   Color glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobe& lobe,
                      Depth next, RandomStream& random, RayCounters& counters) const;
+  /// What a lobe past the -r/-f limit brings: the ray goes on straight through transmissive
+  /// surfaces (keeping their shadow transmittance) to the first opaque one, and returns its
+  /// local shading (ambient and direct light, no further lobes), or the background.
+  Color terminal_light(const SurfaceInteraction& si, const Vector3& direction, float weight, RandomStream& random,
+                       RayCounters& counters) const;
   /// The light arriving along a secondary ray leaving si.
   Color trace_secondary(const SurfaceInteraction& si, const Vector3& direction, Depth depth,
                         RandomStream& random, RayCounters& counters) const;
+  int depth_limit(LobeKind kind) const {
+    return kind == LobeKind::kReflection ? settings_.max_reflection_depth : settings_.max_refraction_depth;
+  }
   bool within_depth(LobeKind kind, const Depth& depth) const {
-    return kind == LobeKind::kReflection ? depth.reflection < settings_.max_reflection_depth
-                                         : depth.refraction < settings_.max_refraction_depth;
+    return (kind == LobeKind::kReflection ? depth.reflection : depth.refraction) < depth_limit(kind);
   }
 
   const World& world_;

@@ -3,6 +3,7 @@
 /// two indices of refraction, and the light a shadow ray keeps crossing it.
 
 #include <algorithm>
+#include <cmath>
 
 #include "mjray/material/optics.h"
 #include "mjray/material/shading.h"
@@ -34,13 +35,13 @@ SpecularLobes dielectric_lobes(const ShadingFrame& f, float eta_outside, float e
 }
 
 /// The share a straight shadow ray keeps crossing the boundary (f.wo points back along the
-/// shadow ray): the weight the refracted ray gets there, 1 − Kr, or 0 under total internal
-/// reflection.
+/// shadow ray): the weight 1 − Kr the refracted ray gets there, as seen from outside at the
+/// ray's angle θ, on the way in and on the way out alike. Shadow rays do not bend, so the
+/// angle inside is the angle outside; by reciprocity a slab then passes (1 − Kr(θ))², and
+/// no crossing is total internal reflection.
 template <class Reflectance>
 float dielectric_transmittance(const ShadingFrame& f, float eta_outside, float eta_inside, Reflectance kr_of) {
-  const auto [eta_i, eta_t] = boundary_indices(f, eta_outside, eta_inside);
-  if (!refract(f.wo, f.n, eta_i / eta_t)) return 0;
-  return std::clamp(1 - kr_of(dot(f.wo, f.n), eta_i, eta_t), 0.f, 1.f);
+  return std::clamp(1 - kr_of(std::abs(dot(f.wo, f.n)), eta_outside, eta_inside), 0.f, 1.f);
 }
 
 }  // namespace mjray

@@ -22,6 +22,7 @@ struct FresnelMaterial {
     const float t = dielectric_transmittance(f, eta_outside, eta_inside, fresnel_dielectric);
     return {t, t, t};
   }
+  bool transmissive() const { return true; }
 };
 
 }  // namespace mjray

@@ -30,6 +30,7 @@ struct GlossyMaterial {
     return lobes;
   }
   Color shadow_transmittance(const ShadingFrame&) const { return {}; }
+  bool transmissive() const { return false; }
 };
 
 }  // namespace mjray

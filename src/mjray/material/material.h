@@ -7,7 +7,8 @@
 ///   - `SpecularLobes specular_lobes(const ShadingFrame&)`: the mirror, glossy and refracted
 ///     directions light arrives along, with their weights;
 ///   - `Color shadow_transmittance(const ShadingFrame&)`: what a shadow ray crossing the
-///     surface keeps (black: opaque).
+///     surface keeps (black: opaque), and `bool transmissive()`: whether that is ever more
+///     than black (the accelerators then let shadow rays continue past it).
 /// The functions below dispatch with std::visit, so a material missing one does not compile.
 /// To add a material: write the struct, add it to `Material`, bind it in
 /// `lua/extension_bindings.cpp`, and test it in `tests/unit/material/`.
@@ -33,6 +34,10 @@ inline SpecularLobes specular_lobes(const Material& m, const ShadingFrame& f) {
 }
 inline Color shadow_transmittance(const Material& m, const ShadingFrame& f) {
   return std::visit([&](const auto& material) { return material.shadow_transmittance(f); }, m);
+}
+
+inline bool transmissive(const Material& m) {
+  return std::visit([](const auto& material) { return material.transmissive(); }, m);
 }
 
 /// The Phong parameters (and texture) of any material: the struct itself or its `base`.

@@ -27,6 +27,7 @@ struct PhongMaterial {
   LocalShading local(const SurfaceInteraction& si) const { return {kd_at(si.object_point, si.uv), ks, shininess}; }
   SpecularLobes specular_lobes(const ShadingFrame&) const { return {}; }
   Color shadow_transmittance(const ShadingFrame&) const { return {}; }
+  bool transmissive() const { return false; }
 };
 
 }  // namespace mjray

@@ -18,6 +18,7 @@ struct ReflectiveMaterial {
     return lobes;
   }
   Color shadow_transmittance(const ShadingFrame&) const { return {}; }
+  bool transmissive() const { return false; }
 };
 
 }  // namespace mjray

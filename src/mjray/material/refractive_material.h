@@ -30,6 +30,7 @@ struct RefractiveMaterial {
     const float t = dielectric_transmittance(f, eta_outside, eta_inside, ConstantReflectance{reflectivity});
     return {t, t, t};
   }
+  bool transmissive() const { return true; }
 };
 
 }  // namespace mjray

@@ -147,6 +147,20 @@ class Flattener {
   std::set<const SceneNode*> warned_;
 };
 
+/// Flags the primitives whose material lets shadow rays through (none: no flags at all).
+void mark_transmissive(World& world) {
+  std::vector<uint8_t> by_material(world.materials.size());
+  bool any = false;
+  for (size_t m = 0; m < world.materials.size(); ++m) any |= (by_material[m] = transmissive(world.materials[m])) != 0;
+  if (!any) return;
+  PrimitiveSet& prims = world.primitives;
+  prims.transmissive_flags.assign(prims.size(), 0);
+  for (const WorldMesh& mesh : world.meshes)
+    std::fill_n(prims.transmissive_flags.begin() + mesh.first_triangle, mesh.corners.size(), by_material[mesh.material]);
+  for (size_t s = 0; s < world.shapes.size(); ++s)
+    prims.transmissive_flags[prims.triangles.size() + s] = by_material[world.shapes[s].material];
+}
+
 }  // namespace
 
 World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t max_size) {
@@ -164,6 +178,7 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
                                     " primitives and mesh vertices once every instance is counted, more than the "
                                     "limit of " + std::to_string(max_size));
   Flattener(world, warnings).visit(*job.root);
+  mark_transmissive(world);
   return world;
 }
 

@@ -1,8 +1,29 @@
 #include "mjray/scene/world.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "mjray/geometry/spawn_ray.h"
 
 namespace mjray {
+
+namespace {
+
+/// Error bound of a point computed as world_from_object(p) from a unit-shape surface point p
+/// (itself within a few ulps of the surface): p's own error carried by |M|, the rounding of the
+/// mapped point, and that of mapping a ray origin back into the shape's frame, so that a ray
+/// leaving from outside the bound stays on its side in both frames.
+Vector3 transformed_point_error(const Matrix4& world_from_object, const Point3& p) {
+  const auto& m = world_from_object.m;
+  Vector3 error;
+  for (int i = 0; i < 3; ++i) {
+    const double linear = std::abs(m[i][0] * p.x) + std::abs(m[i][1] * p.y) + std::abs(m[i][2] * p.z);
+    error[i] = float(linear * gamma_bound(5) + (linear + std::abs(m[i][3])) * gamma_bound(3));
+  }
+  return error;
+}
+
+}  // namespace
 
 const WorldMesh& World::mesh_of(uint32_t triangle) const {
   const auto after = std::upper_bound(meshes.begin(), meshes.end(), triangle,
@@ -21,6 +42,9 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
     const Vector3 weighted = Vector3(p0.x, p0.y, p0.z) * b0 + Vector3(p1.x, p1.y, p1.z) * hit.u +
                              Vector3(p2.x, p2.y, p2.z) * hit.v;
     si.point = {weighted.x, weighted.y, weighted.z};
+    // The interpolation's error bound (pbrt-v4's, for barycentric points).
+    si.point_error = (abs(Vector3(p0.x, p0.y, p0.z) * b0) + abs(Vector3(p1.x, p1.y, p1.z) * hit.u) +
+                      abs(Vector3(p2.x, p2.y, p2.z) * hit.v)) * gamma_bound(7);
     si.geometric_normal = normalize(Normal3(cross(p1 - p0, p2 - p0)));
     si.shading_normal = si.geometric_normal;
     if (c[0].normal >= 0 && c[1].normal >= 0 && c[2].normal >= 0) {
@@ -46,6 +70,7 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
   si.uv = surface.uv;
   si.object_point = s.node_from_object(surface.point);
   si.point = s.world_from_object(surface.point);
+  si.point_error = transformed_point_error(s.world_from_object.matrix(), surface.point);
   si.geometric_normal = normalize(s.world_from_object(surface.normal));
   si.shading_normal = si.geometric_normal;
   si.material = s.material;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -153,14 +154,15 @@ namespace {
 const PointLight kDark{{0, 50, 0}, {0, 0, 0}, {1, 0, 0}};
 
 TEST(ClosedForm, FresnelSlabReflectsTheNormalIncidenceReflectance) {
-  // Straight down onto a clear Fresnel slab, the mirror ray sees the zenith colour Z. With
-  // -f 1 the refracted ray may not leave the slab again, so what comes back is F(0)·Z with
-  // F(0) = ((n1 − n2)/(n1 + n2))², through the whole integrator.
+  // Straight down onto a clear Fresnel slab resting on a black box, the mirror ray sees the
+  // zenith colour Z and the refracted light is absorbed: F(0)·Z with F(0) = ((n1 − n2)/(n1 + n2))²,
+  // through the whole integrator.
   for (const float n : {1.33f, 1.5f, 2.4f}) {
     RenderJob job;
-    job.root = test::box({-50, -1, -50}, {50, 0, 50}, FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, n});
+    job.root = test::group({test::box({-50, -1, -50}, {50, 0, 50}, FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, n}),
+                            test::box({-60, -5, -60}, {60, -1, 60}, PhongMaterial{{0, 0, 0}, {0, 0, 0}, 1})});
     job.lights = {kDark};
-    const test::TestJob prepared(job, test::oracle_options({8, 1, 1}));
+    const test::TestJob prepared(job);
     const Color seen = prepared.radiance({{0.3f, 5, -0.2f}, {0, -1, 0}});
     const float f0 = ((1 - n) / (1 + n)) * ((1 - n) / (1 + n));
     const Color zenith = Background{}.zenith;
@@ -168,6 +170,30 @@ TEST(ClosedForm, FresnelSlabReflectsTheNormalIncidenceReflectance) {
     EXPECT_NEAR(seen.g, f0 * zenith.g, 1e-5f) << "n = " << n;
     EXPECT_NEAR(seen.b, f0 * zenith.b, 1e-5f) << "n = " << n;
   }
+}
+
+/// The floor's brightness at the origin under a light straight above, with `slab` (or
+/// nothing) hanging between them, seen from just above the floor.
+float floor_under_slab(std::optional<Material> slab) {
+  RenderJob job;
+  std::vector<std::shared_ptr<const SceneNode>> nodes = {
+      test::mesh(test::floor_quad(100), PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1})};
+  if (slab) nodes.push_back(test::box({-10, 4, -10}, {10, 5, 10}, *slab));
+  job.root = test::group(nodes);
+  job.lights = {PointLight{{0, 10, 0}, {1, 1, 1}, {1, 0, 0}}};
+  return test::TestJob(job).radiance({{0.01f, 1, 0.02f}, {0, -1, 0}}).g;
+}
+
+TEST(ClosedForm, ShadowsThroughASlabKeepTheRefractedShare) {
+  const float open = floor_under_slab(std::nullopt);
+  ASSERT_GT(open, 0.9f);
+  // Two interfaces at normal incidence, each passing 1 − F(0) = 0.96 for index 1.5.
+  const PhongMaterial clear{{0, 0, 0}, {0, 0, 0}, 1};
+  EXPECT_NEAR(floor_under_slab(FresnelMaterial{clear, 1, 1.5f}) / open, 0.96f * 0.96f, 0.01f * 0.9216f);
+  EXPECT_EQ(floor_under_slab(RefractiveMaterial{clear, 0, 1, 1.5f}), open);   // refracted: all of it
+  EXPECT_NEAR(floor_under_slab(RefractiveMaterial{clear, 0.25f, 1, 1.5f}) / open, 0.75f * 0.75f, 1e-5f);
+  EXPECT_EQ(floor_under_slab(PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1}), 0);      // opaque: none
+  EXPECT_EQ(floor_under_slab(ReflectiveMaterial{clear, 0.5f}), 0);
 }
 
 TEST(ClosedForm, TiltedVertexNormalsShadeWithTheirNormal) {

@@ -46,7 +46,8 @@ TEST(SecondaryRays, DepthLimitsCountReflectionsBetweenParallelMirrors) {
                                      test::box({-50, 10, -50}, {50, 11, 50}, mirror)}));
   for (const int depth : {0, 1, 3, 7}) {
     const Traced t = trace(job, {{0, 5, 0}, {0, -1, 0}}, {depth, 8});
-    EXPECT_EQ(t.rays.secondary, uint64_t(depth)) << "-r " << depth;
+    // -r N traces N reflections, then one terminal look along the last lobe (none for -r 0).
+    EXPECT_EQ(t.rays.secondary, uint64_t(depth + (depth > 0 ? 1 : 0))) << "-r " << depth;
     EXPECT_EQ(t.colour, Color(0, 0, 0));  // nothing but black mirrors to see
   }
 }
@@ -63,7 +64,10 @@ TEST(SecondaryRays, RefractionThroughASlabSeesTheFloorBelow) {
   EXPECT_NEAR(t.colour.g, 0.6f, 1e-6f);
   EXPECT_EQ(t.rays.secondary, 2u);  // into the slab, out of it
   EXPECT_EQ(trace(job, kDown, {8, 0}).colour, Color(0, 0, 0));  // -f 0: no transmission
-  EXPECT_EQ(trace(job, kDown, {8, 1}).rays.secondary, 1u);       // -f 1: stuck inside
+  // -f 1: into the slab, then past the limit a straight look out of it, which sees the floor.
+  const Traced limited = trace(job, kDown, {8, 1});
+  EXPECT_EQ(limited.rays.secondary, 2u);
+  EXPECT_NEAR(limited.colour.b, 0.8f, 1e-6f);
 }
 
 TEST(SecondaryRays, RayStartingInsideGlassRefractsOut) {
@@ -86,10 +90,13 @@ TEST(SecondaryRays, ReflectRefractBlendsByKr) {
                                      test::mesh(test::floor_quad(50), PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1})}));
   job.ambient = {1, 1, 1};
   const Traced t = trace(job, kDown, {1, 8});  // -r 1: one reflection per path
-  // Top face: Kr·sky + (1−Kr)·inside. Inside, the bottom face splits again: Kr back up
-  // (which leaves through the top face without a second reflection) and (1−Kr) to the floor.
+  // Top face: Kr·sky + (1−Kr)·inside. Inside, the bottom face splits again: Kr back up and
+  // (1−Kr) to the floor. Going up, the top face splits once more: (1−Kr) to the sky, and Kr
+  // past the -r 1 limit, which ends in a terminal look straight down through the bottom face
+  // (keeping 1 − Kr) at the floor.
   const float sky = job.background.zenith.r;
-  const float inside = kr * (1 - kr) * sky + (1 - kr) * 1;
+  const float up = kr * (1 - kr) * 1 + (1 - kr) * sky;
+  const float inside = kr * up + (1 - kr) * 1;
   EXPECT_NEAR(t.colour.r, kr * sky + (1 - kr) * inside, 1e-5f);
 }
 
@@ -99,8 +106,9 @@ TEST(SecondaryRays, TotalInternalReflectionSendsAllLightBack) {
   RenderJob job = scene(test::box({-50, -1, -50}, {50, 1, 50}, glass));
   const float s = std::sin(1.047f), c = std::cos(1.047f);
   const Traced t = trace(job, {{0, 0, 0}, {s, c, 0}}, {1, 8});
-  // One reflection allowed, no transmission at the top face: exactly 1 secondary ray.
-  EXPECT_EQ(t.rays.secondary, 1u);
+  // No transmission at the top face: its one reflection (-r 1), then at the bottom face, past
+  // the limit, a terminal look that crosses the top face and leaves: 3 secondary rays.
+  EXPECT_EQ(t.rays.secondary, 3u);
 }
 
 TEST(SecondaryRays, NegligibleBranchesArePrunedSoGlassStaysCheap) {

@@ -1,0 +1,64 @@
+#include "mjray/integrator/shadow_transmittance.h"
+
+#include <algorithm>
+#include <array>
+#include <span>
+
+namespace mjray {
+
+namespace {
+
+/// Collects the transmissive crossings of one shadow ray; more than kCapacity block it.
+/// Accelerators report a shape's first crossing only, so the way out of a sphere or a box is
+/// found here.
+class TransmissiveHits final : public HitFilter {
+ public:
+  static constexpr int kCapacity = 64;
+
+  TransmissiveHits(const PrimitiveSet& prims, const Ray& ray, float t_max) : prims_(prims), ray_(ray), t_max_(t_max) {}
+
+  bool blocks(const Hit& hit) override {
+    for (std::optional<Hit> crossing = hit; crossing;) {
+      if (count_ == kCapacity) return true;
+      hits_[size_t(count_++)] = *crossing;
+      if (prims_.is_triangle(hit.prim)) break;
+      crossing = prims_.intersect(hit.prim, ray_, {crossing->t, t_max_});
+    }
+    return false;
+  }
+
+  /// The hits in order along the ray, each primitive once.
+  std::span<const Hit> in_order() {
+    std::sort(hits_.begin(), hits_.begin() + count_,
+              [](const Hit& a, const Hit& b) { return a.t < b.t || (a.t == b.t && a.prim < b.prim); });
+    const auto end = std::unique(hits_.begin(), hits_.begin() + count_,
+                                 [](const Hit& a, const Hit& b) { return a.prim == b.prim && a.t == b.t; });
+    return {hits_.data(), size_t(end - hits_.begin())};
+  }
+
+ private:
+  const PrimitiveSet& prims_;
+  const Ray& ray_;
+  float t_max_;
+  std::array<Hit, kCapacity> hits_;
+  int count_ = 0;
+};
+
+}  // namespace
+
+Color shadow_ray_transmittance(const World& world, const Accelerator& accel, const Ray& ray, float t_max) {
+  if (!world.primitives.any_transmissive()) return accel.occluded(ray, t_max) ? Color{} : Color{1, 1, 1};
+  TransmissiveHits hits(world.primitives, ray, t_max);
+  if (accel.occluded(ray, {0, t_max}, hits)) return {};
+  Color kept{1, 1, 1};
+  const Vector3 wo = normalize(-ray.direction);
+  for (const Hit& hit : hits.in_order()) {
+    const SurfaceInteraction si = world.interaction(ray, hit);
+    const ShadingFrame frame{wo, face_forward(si.shading_normal, wo), si.geometric_normal};
+    kept = kept * shadow_transmittance(world.materials[si.material], frame);
+    if (kept.is_black()) break;
+  }
+  return kept;
+}
+
+}  // namespace mjray
