@@ -1,95 +1,119 @@
--- The original project's final scene, redone: everyday things on a wooden table. Two pint
--- glasses and a glass ball (Fresnel glass), a marble ball, a bowl, a gilded picture frame
--- around an abstract painting, one soft area light and a dim fill light.
--- Render: build/mjray -r 8 -f 8 -s 3 -a 2 scenes/final_scene.lua     (final_scene.png)
+-- The original project's final scene: glass on a wooden table. Two pint glasses and a
+-- tumbler (glass with real walls and thick bases, smooth normals, standing on the table), a
+-- glass ball, a marble ball in a ceramic bowl, a gilded frame around a painting on the wall,
+-- under a soft window light with a cool fill, encoded for display (sRGB).
+-- Render: build/mjray -s 4 -a 2 --gamma srgb scenes/final_scene.lua     (final_scene.png, 1280x720)
+-- Meshes: scenes/meshes/{pint_glass,tumbler,bowl}.obj (scripts/make_glassware.py) and
+-- picture_frame.obj (scripts/make_frame.py); the painting: scenes/textures/painting.png
+-- (scripts/make_painting.py).
 -- Every node carries at most one transform, so either transform-order rule gives this scene.
 
 local root = gr.node('root')
 
--- box(name, lo, hi, material): an axis-aligned box from the unit cube
+-- place(child, {x, y, z}): a node that moves its child
+local function place(child, at)
+  local node = gr.node(child .. '_at')
+  node:translate(at[1], at[2], at[3])
+  root:add_child(node)
+  return node
+end
+
+-- box(name, lo, hi, material): an axis-aligned box (a unit cube scaled into place)
 local function box(name, lo, hi, material)
-  local at = gr.node(name .. '_at')
-  at:translate(lo[1], lo[2], lo[3])
   local size = gr.node(name .. '_size')
   size:scale(hi[1] - lo[1], hi[2] - lo[2], hi[3] - lo[3])
   local cube = gr.cube(name)
   cube:set_material(material)
-  at:add_child(size)
   size:add_child(cube)
-  root:add_child(at)
+  place(name, lo):add_child(size)
 end
 
--- lathe(name, profile, segments, material, position): a surface of revolution about +y of the
--- (radius, height) profile, as a table-form mesh with 0-based quad faces
-local function lathe(name, profile, segments, material, position)
-  local vertices, faces = {}, {}
-  for i = 0, segments - 1 do
-    local a = 2 * math.pi * i / segments
-    for _, p in ipairs(profile) do
-      vertices[#vertices + 1] = {p[1] * math.cos(a), p[2], p[1] * math.sin(a)}
-    end
-  end
-  local n = #profile
-  for i = 0, segments - 1 do
-    local i2 = (i + 1) % segments
-    for j = 0, n - 2 do
-      faces[#faces + 1] = {i * n + j, i * n + j + 1, i2 * n + j + 1, i2 * n + j}
-    end
-  end
-  local mesh = gr.mesh(name, vertices, faces)
-  mesh:set_material(material)
-  local at = gr.node(name .. '_at')
-  at:translate(position[1], position[2], position[3])
-  at:add_child(mesh)
-  root:add_child(at)
+-- board(name, lo, hi, material, grain): a box whose object-space texture is stretched with it
+-- (one texture unit along each side) and offset by `grain`, so each board shows its own
+-- long grain
+local function board(name, lo, hi, material, grain)
+  local size = gr.node(name .. '_size')
+  size:scale(hi[1] - lo[1], hi[2] - lo[2], hi[3] - lo[3])
+  local shift = gr.node(name .. '_shift')
+  shift:translate(-grain, -grain, -grain)
+  local plank = gr.nh_box(name, {grain, grain, grain}, 1)
+  plank:set_material(material)
+  shift:add_child(plank)
+  size:add_child(shift)
+  place(name, lo):add_child(size)
 end
 
-local glass = gr.fresneldiectricmaterial({0, 0, 0}, {0.9, 0.9, 0.9}, 600, 1.0, 1.5)
-local wood = gr.material({0.5, 0.3, 0.14}, {0.3, 0.3, 0.3}, 40)
-wood:set_material_texture(gr.perlinnoisewoodgraintexture({0.52, 0.3, 0.13}, {0.34, 0.18, 0.07}, 0.6))
-local marble = gr.reflectivematerial({0.9, 0.9, 0.88}, {0.6, 0.6, 0.6}, 150, 0.1)
-marble:set_material_texture(gr.perlinnoisemarbletexture({0.93, 0.92, 0.9}, {0.25, 0.3, 0.35}, 3))
-local gold = gr.glossyreflectivematerial({0.75, 0.55, 0.2}, {0.8, 0.7, 0.4}, 80, 0.9, 6)
-local painting = gr.material({0.8, 0.5, 0.3}, {0, 0, 0}, 1)
-painting:set_material_texture(gr.perlinnoisewavytexture({0.95, 0.6, 0.2}, {0.15, 0.25, 0.55}, 1.2, 6))
-local ceramic = gr.material({0.85, 0.85, 0.9}, {0.7, 0.7, 0.7}, 120)
-local wall = gr.material({0.72, 0.7, 0.64}, {0, 0, 0}, 1)
-local floor = gr.material({0.35, 0.3, 0.28}, {0, 0, 0}, 1)
+-- mesh(name, file, material, at, scale): an OBJ mesh placed and scaled uniformly
+local function mesh(name, file, material, at, scale)
+  local size = gr.node(name .. '_size')
+  size:scale(scale, scale, scale)
+  local m = gr.mesh(name, file)
+  m:set_material(material)
+  size:add_child(m)
+  place(name, at):add_child(size)
+end
+
+-- materials
+local glass = gr.fresneldiectricmaterial({0, 0, 0}, {0.9, 0.9, 0.9}, 800, 1.0, 1.5)
+local wood = gr.material({0.5, 0.3, 0.14}, {0.18, 0.16, 0.13}, 25)
+wood:set_material_texture(gr.perlinnoisewoodgraintexture({0.46, 0.26, 0.11}, {0.33, 0.17, 0.07}, 1.4), 'object')
+local marble = gr.reflectivematerial({0.9, 0.9, 0.88}, {0.6, 0.6, 0.6}, 200, 0.06)
+marble:set_material_texture(gr.perlinnoisemarbletexture({0.9, 0.9, 0.87}, {0.28, 0.32, 0.38}, 2.6), 'object')
+local ceramic = gr.reflectivematerial({0.82, 0.84, 0.88}, {0.7, 0.7, 0.7}, 300, 0.08)
+local gold = gr.glossyreflectivematerial({0.16, 0.09, 0.012}, {1.0, 0.68, 0.18}, 18, 0.12, 8)
+local painting = gr.material({1, 1, 1}, {0.05, 0.05, 0.05}, 10)
+painting:set_material_texture(gr.filetexture('textures/painting.png'))
+local plaster = gr.material({0.76, 0.72, 0.64}, {0, 0, 0}, 1)
+plaster:set_material_texture(gr.perlinnoisecosineinterptexture({0.78, 0.74, 0.66}, {0.7, 0.66, 0.58}, 1.5))
+local stone = gr.material({0.36, 0.33, 0.3}, {0.05, 0.05, 0.05}, 10)
+stone:set_material_texture(gr.perlinnoiselininterptexture({0.38, 0.34, 0.3}, {0.26, 0.24, 0.22}, 0.8))
 
 -- the room
-box('floor', {-40, -2.4, -40}, {40, -1.4, 40}, floor)
-box('wall', {-40, -2.4, 4.5}, {40, 30, 5.5}, wall)
+box('floor', {-40, -3.4, -40}, {40, -2.4, 40}, stone)
+box('wall', {-40, -3.4, 4.5}, {40, 30, 5.5}, plaster)
 
--- the table: a top and four legs
-box('top', {-4.2, -0.3, -2.4}, {4.2, 0, 2.6}, wood)
-for i, p in ipairs({{-3.8, -2}, {3.8, -2}, {-3.8, 2.2}, {3.8, 2.2}}) do
-  box('leg' .. i, {p[1] - 0.18, -1.4, p[2] - 0.18}, {p[1] + 0.18, -0.3, p[2] + 0.18}, wood)
+-- the table: five boards and four legs
+for i = 0, 4 do
+  local z0 = -2.5 + i * 1.004
+  board('board' .. i, {-4.2, -0.3, z0}, {4.2, 0, z0 + 0.984}, wood, 1.37 * i + 0.3)
+end
+for i, p in ipairs({{-3.8, -2.1}, {3.8, -2.1}, {-3.8, 2.1}, {3.8, 2.1}}) do
+  board('leg' .. i, {p[1] - 0.16, -2.4, p[2] - 0.16}, {p[1] + 0.16, -0.3, p[2] + 0.16}, wood, 7 + i)
 end
 
--- two pint glasses: walls with thickness and a thick base, and a glass ball
-local pint = {{0, 0}, {0.34, 0}, {0.36, 0.12}, {0.42, 1.5}, {0.38, 1.5}, {0.32, 0.16}, {0, 0.16}}
-lathe('pint1', pint, 64, glass, {-1.9, 0, -0.2})
-lathe('pint2', pint, 64, glass, {0.5, 0, 0.9})
-local ball = gr.nh_sphere('glass_ball', {1.9, 0.55, -1}, 0.55)
+-- glass: two pints, a tumbler and a ball, all standing on the table top (y = 0)
+mesh('pint1', 'meshes/pint_glass.obj', glass, {-1.7, 0, -0.2}, 1)
+mesh('pint2', 'meshes/pint_glass.obj', glass, {0.7, 0, 1.1}, 1)
+mesh('tumbler', 'meshes/tumbler.obj', glass, {-0.4, 0, -1.2}, 0.7)
+local ball = gr.nh_sphere('glass_ball', {2.3, 0.55, -1.0}, 0.55)
 ball:set_material(glass)
 root:add_child(ball)
 
 -- a marble ball in a ceramic bowl
-lathe('bowl', {{0, 0}, {0.5, 0}, {0.8, 0.35}, {0.74, 0.35}, {0.46, 0.06}, {0, 0.06}}, 48, ceramic, {-3.2, 0, 1.3})
-local stone = gr.nh_sphere('marble', {-3.2, 0.42, 1.3}, 0.36)
-stone:set_material(marble)
-root:add_child(stone)
+mesh('bowl', 'meshes/bowl.obj', ceramic, {-3.1, 0, 1.3}, 1)
+local stone_ball = gr.nh_sphere('marble', {-3.1, 0.43, 1.3}, 0.33)
+stone_ball:set_material(marble)
+root:add_child(stone_ball)
 
--- the picture on the wall: a gilded frame around the painting
-local cx, cy = 0.6, 3.1
-box('bar_top', {cx - 1.8, cy + 1.0, 4.38}, {cx + 1.8, cy + 1.25, 4.5}, gold)
-box('bar_bottom', {cx - 1.8, cy - 1.25, 4.38}, {cx + 1.8, cy - 1.0, 4.5}, gold)
-box('bar_left', {cx - 1.8, cy - 1.25, 4.38}, {cx - 1.55, cy + 1.25, 4.5}, gold)
-box('bar_right', {cx + 1.55, cy - 1.25, 4.38}, {cx + 1.8, cy + 1.25, 4.5}, gold)
-box('canvas', {cx - 1.55, cy - 1.0, 4.46}, {cx + 1.55, cy + 1.0, 4.5}, painting)
+-- the picture: a gilded moulding (lip, cove, bead; scripts/make_frame.py) around the painting
+-- (4:3), on the wall
+local cx, cy, w, h = 0.4, 3.3, 1.6, 1.2
+local z = 4.5
+mesh('frame', 'meshes/picture_frame.obj', gold, {cx, cy, z}, 1)
+local canvas_turn = gr.node('canvas_turn')
+canvas_turn:rotate('y', 180)  -- the quad faces +z; turned, it faces the room
+local canvas_size = gr.node('canvas_size')
+canvas_size:scale(w, h, 1)
+local canvas = gr.mesh('canvas', 'meshes/picture_quad.obj')
+canvas:set_material(painting)
+canvas_size:add_child(canvas)
+canvas_turn:add_child(canvas_size)
+place('canvas', {cx, cy, z - 0.01}):add_child(canvas_turn)
 
-local key = gr.arealight({-4, 8, -5}, {0.95, 0.92, 0.85}, {1, 0, 0}, {-2.5, 8, -5}, {-4, 8, -3.5})
-local fill = gr.light({6, 3, -7}, {0.25, 0.25, 0.3}, {1, 0, 0})
-gr.render(root, 'final_scene.png', 640, 480,
-          {0.3, 3.0, -8.2}, {0, -2.0, 8}, {0, 1, 0}, 46,
-          {0.08, 0.08, 0.08}, {key, fill})
+-- light: a window to the upper left behind the camera and a dim cool fill from the right; the
+-- ambient light stands for the room's bounced light, so nothing is black
+local window = gr.arealight({-6.5, 7.5, -6}, {1.0, 0.94, 0.84}, {1, 0, 0}, {-4, 7.5, -6}, {-6.5, 9.5, -4.5})
+local fill = gr.light({6, 6, -8}, {0.14, 0.15, 0.19}, {1, 0, 0})
+gr.render(root, 'final_scene.png', 1280, 720,
+          {0.2, 3.1, -9.8}, {0, -0.22, 1}, {0, 1, 0}, 38,
+          {0.16, 0.15, 0.14}, {window, fill})

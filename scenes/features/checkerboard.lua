@@ -13,9 +13,9 @@ local floor = gr.nh_box('floor', {-40, -80, -40}, 80)
 floor:set_material(floor_mat)
 root:add_child(floor)
 
--- a cube of side 2, turned 25 degrees about y, with 0.5-unit cells
+-- a cube of side 2, turned 25 degrees about y, with 0.5-unit cells (scale 2) that follow it
 local red_white = gr.material({1, 1, 1}, {0.4, 0.4, 0.4}, 50)
-red_white:set_material_texture(gr.checkerboardtexture({0.85, 0.1, 0.1}, {0.95, 0.95, 0.95}, 0.5))
+red_white:set_material_texture(gr.checkerboardtexture({0.85, 0.1, 0.1}, {0.95, 0.95, 0.95}, 2), 'object')
 local place = gr.node('place')
 place:translate(-1.6, 1, 0)
 local turn = gr.node('turn')

@@ -1,6 +1,6 @@
 -- Feature scene: the five noise textures side by side, each on a sphere resting on a turned
 -- cube. Left to right: linear interpolation, cosine interpolation, marble, wavy (noise
--- multiplier 0.6), wood grain. Solid textures are evaluated in object space, so the turned
+-- multiplier 0.6), wood grain. The textures are set in object space ('object'), so the turned
 -- cubes carry their patterns with them.
 -- Render: build/mjray scenes/features/perlin_textures.lua   (400x300, writes perlin_textures.png)
 -- Every node carries at most one transform, so either transform-order rule gives the same scene.
@@ -23,7 +23,7 @@ local textures = {
 for i, texture in ipairs(textures) do
   local x = -4.8 + 2.4 * (i - 1)
   local m = gr.material({1, 1, 1}, {0.3, 0.3, 0.3}, 40)
-  m:set_material_texture(texture)
+  m:set_material_texture(texture, 'object')
 
   local ball = gr.nh_sphere('ball' .. i, {x, 0.9, 0}, 0.9)
   ball:set_material(m)

@@ -66,6 +66,17 @@ TEST_F(LuaTexture, CheckerboardOnAPhongMaterial) {
   EXPECT_EQ(board->scale, 2);
 }
 
+TEST_F(LuaTexture, SolidTexturesReadWorldSpaceUnlessObjectIsAsked) {
+  const std::string texture = "t = gr.checkerboardtexture({1, 1, 1}, {0, 0, 0}, 1)\n";
+  for (const auto& [call, space] : {std::pair{"m:set_material_texture(t)", TextureSpace::kWorld},
+                                    std::pair{"m:set_material_texture(t, 'world')", TextureSpace::kWorld},
+                                    std::pair{"m:set_material_texture(t, 'object')", TextureSpace::kObject}}) {
+    const auto scene = load("root = gr.sphere('s')\nm = gr.reflectivematerial({1, 1, 1}, {0, 0, 0}, 1, 0.5)\n" + texture +
+                            call + "\nroot:set_material(m)\n" + kRender);
+    EXPECT_EQ(phong_of(*scene.jobs.at(0).root->material).texture_space, space) << call;
+  }
+}
+
 TEST_F(LuaTexture, EveryPerlinCallMakesItsPattern) {
   const std::pair<const char*, PerlinPattern> calls[] = {
       {"perlinnoiselininterptexture", PerlinPattern::kLinear},
@@ -197,6 +208,9 @@ TEST_F(LuaTextureErrors, SetMaterialTextureArguments) {
                      "t = gr.checkerboardtexture({1, 1, 1}, {0, 0, 0}, 1)\n"
                      "m.set_material_texture(t)\n"),
             at(3) + "material:set_material_texture: must be called on a material (with ':'), got a gr.texture");
+  EXPECT_EQ(error_of("m = gr.material({1, 1, 1}, {0, 0, 0}, 1)\n"
+                     "m:set_material_texture(gr.checkerboardtexture({1, 1, 1}, {0, 0, 0}, 1), 'model')\n"),
+            at(2) + "material:set_material_texture: argument 2 (texture space) must be 'world' or 'object', got the string 'model'");
 }
 
 TEST_F(LuaTextureErrors, TextureIsNotAMaterial) {

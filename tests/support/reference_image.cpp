@@ -28,7 +28,7 @@ std::vector<fs::path> shipped_scenes() {
 std::string header_options(const fs::path& scene) {
   std::ifstream in(scene);
   std::string line;
-  const std::regex render(R"(Render: +(?:build/mjray|\./render\.sh)((?: +-[-a-z]+(?: +[0-9.]+)?)*))");
+  const std::regex render(R"(Render: +(?:build/mjray|\./render\.sh)((?: +-[-a-z]+(?: +[0-9a-z.]+)?)*))");
   for (int i = 0; i < 10 && std::getline(in, line); ++i) {
     std::smatch m;
     if (std::regex_search(line, m, render)) return m[1];

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <span>
 
 namespace mjray {
@@ -22,7 +23,8 @@ class TransmissiveHits final : public HitFilter {
       if (count_ == kCapacity) return true;
       hits_[size_t(count_++)] = *crossing;
       if (prims_.is_triangle(hit.prim)) break;
-      crossing = prims_.intersect(hit.prim, ray_, {crossing->t, t_max_});
+      // Past the float t just found: the shape's own root, rounded down to it, may lie above.
+      crossing = prims_.intersect(hit.prim, ray_, {std::nextafter(crossing->t, kInfinity), t_max_});
     }
     return false;
   }

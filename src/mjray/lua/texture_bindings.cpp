@@ -70,7 +70,8 @@ int gr_filetexture(lua_State* L) {
   return push_texture(L, std::move(texture));
 }
 
-/// material:set_material_texture(texture): every material's Phong part takes the texture.
+/// material:set_material_texture(texture[, 'world' | 'object']): every material's Phong part
+/// takes the texture; solid textures read the world-space point unless 'object' is given.
 int material_set_material_texture(lua_State* L) {
   const char* fn = "material:set_material_texture";
   auto* material = test_shared<Material>(L, 1, kMaterialType);
@@ -78,12 +79,18 @@ int material_set_material_texture(lua_State* L) {
     throw ArgumentError(std::string(fn) + ": must be called on a material (with ':'), got " + describe(L, 1));
   auto* texture = test_shared<const Texture>(L, 2, kTextureType);
   if (!texture) bad_argument(L, fn, 2, "texture", "a texture (gr.checkerboardtexture, gr.perlinnoise...texture or gr.filetexture)");
+  TextureSpace space = TextureSpace::kWorld;
+  if (!lua_isnoneornil(L, 3)) {
+    const std::string name = lua_type(L, 3) == LUA_TSTRING ? lua_tostring(L, 3) : "";
+    if (name == "object") space = TextureSpace::kObject;
+    else if (name != "world") bad_argument(L, fn, 3, "texture space", "'world' or 'object'");
+  }
   std::visit([&](auto& m) {
-    if constexpr (std::is_same_v<std::decay_t<decltype(m)>, PhongMaterial>) {
-      m.texture = *texture;
-    } else {
-      m.base.texture = *texture;
-    }
+    PhongMaterial* phong;
+    if constexpr (std::is_same_v<std::decay_t<decltype(m)>, PhongMaterial>) phong = &m;
+    else phong = &m.base;
+    phong->texture = *texture;
+    phong->texture_space = space;
   }, **material);
   return 0;
 }

@@ -18,13 +18,16 @@ struct PhongMaterial {
   float shininess = 0;    ///< Phong exponent of max(0, r·v)
   /// material:set_material_texture: when set, replaces kd at each hit (ambient and diffuse).
   std::shared_ptr<const Texture> texture = nullptr;
+  /// Which point a solid texture reads (set_material_texture's optional 'world' | 'object').
+  TextureSpace texture_space = TextureSpace::kWorld;
 
   /// The diffuse reflectance at a hit: the texture's colour there, or kd.
-  Color kd_at(const Point3& object_point, const Point2& uv) const {
-    return texture ? evaluate(*texture, object_point, uv) : kd;
+  Color kd_at(const SurfaceInteraction& si) const {
+    if (!texture) return kd;
+    return evaluate(*texture, texture_space == TextureSpace::kWorld ? si.point : si.object_point, si.uv);
   }
 
-  LocalShading local(const SurfaceInteraction& si) const { return {kd_at(si.object_point, si.uv), ks, shininess}; }
+  LocalShading local(const SurfaceInteraction& si) const { return {kd_at(si), ks, shininess}; }
   SpecularLobes specular_lobes(const ShadingFrame&) const { return {}; }
   Color shadow_transmittance(const ShadingFrame&) const { return {}; }
   bool transmissive() const { return false; }

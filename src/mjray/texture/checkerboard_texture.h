@@ -6,9 +6,10 @@
 
 namespace mjray {
 
-/// Cubic cells of edge `scale` (object units) aligned with the object frame's axes: a point
-/// p reads colour1 where ⌊x/s + ε⌋ + ⌊y/s + ε⌋ + ⌊z/s + ε⌋ is even, colour2 where it is odd
-/// (s = scale, ε = kEdgeBias). So a cell spans [k·s − ε·s, (k+1)·s − ε·s) on each axis: a face
+/// Cubic cells of edge 1/scale aligned with the axes of the texture's space: as for every
+/// texture the point is multiplied by the scale (a smaller scale, larger cells), and p reads
+/// colour1 where ⌊s·x + ε⌋ + ⌊s·y + ε⌋ + ⌊s·z + ε⌋ is even, colour2 where it is odd
+/// (s = scale, ε = kEdgeBias). So a cell spans [(k − ε)/s, (k + 1 − ε)/s) on each axis: a face
 /// lying on a cell boundary (a floor at y = 0), whose hit points scatter by rounding on both
 /// sides of it, reads the cell on its + side everywhere instead of flickering between two.
 struct CheckerboardTexture {
@@ -17,7 +18,7 @@ struct CheckerboardTexture {
 
   Color colour1;
   Color colour2;
-  float scale = 1;  ///< cell edge length in object units, > 0
+  float scale = 1;  ///< cells per unit length, > 0 (the cell edge is 1/scale)
 
   /// The colour at an object-space point (the uv is unused).
   Color evaluate(const Point3& object_point, const Point2& uv = {}) const;

@@ -23,8 +23,8 @@ namespace mjray {
 /// Cosine interpolation uses w = (1 − cos(π·t)) / 2 in place of t (Hugo Elias).
 enum class PerlinPattern { kLinear, kCosine, kMarble, kWavy, kWoodGrain };
 
-/// A noise texture. `scale` is a frequency: noise lattice cells per object unit, so a
-/// smaller scale makes the pattern larger on the object ("scaled down in texture space").
+/// A noise texture. `scale` is a frequency: noise lattice cells per unit of the texture's
+/// space, so a smaller scale makes the pattern larger ("scaled down in texture space").
 struct PerlinTexture {
   static constexpr int kFractalOctaves = 4;       ///< octaves of f (kLinear, kCosine)
   static constexpr int kTurbulenceOctaves = 6;    ///< octaves of T (kMarble)

@@ -16,11 +16,15 @@ namespace mjray {
 
 using Texture = std::variant<CheckerboardTexture, PerlinTexture, ImageTexture>;
 
-/// The texture's colour at a hit. Solid textures read `object_point`, the hit in the frame
-/// the primitive is written in (SurfaceInteraction::object_point), so they move with their
-/// objects; image textures read the surface's `uv`.
-inline Color evaluate(const Texture& texture, const Point3& object_point, const Point2& uv) {
-  return std::visit([&](const auto& t) { return t.evaluate(object_point, uv); }, texture);
+/// Where a solid texture reads its point: the world-space hit point (the original's rule, so
+/// one texture looks the same on every object), or the point in the object's own frame (so
+/// the pattern moves and turns with its object, as animations want).
+enum class TextureSpace { kWorld, kObject };
+
+/// The texture's colour at a hit: solid textures read `point` (world or object space, as the
+/// material chose), image textures the surface's `uv`.
+inline Color evaluate(const Texture& texture, const Point3& point, const Point2& uv) {
+  return std::visit([&](const auto& t) { return t.evaluate(point, uv); }, texture);
 }
 
 }  // namespace mjray

@@ -173,12 +173,14 @@ TEST(ClosedForm, FresnelSlabReflectsTheNormalIncidenceReflectance) {
 }
 
 /// The floor's brightness at the origin under a light straight above, with `slab` (or
-/// nothing) hanging between them, seen from just above the floor.
-float floor_under_slab(std::optional<Material> slab) {
+/// nothing) hanging between them, seen from just above the floor; a ball of the slab's
+/// material instead when `ball`.
+float floor_under_slab(std::optional<Material> slab, bool ball = false) {
   RenderJob job;
   std::vector<std::shared_ptr<const SceneNode>> nodes = {
       test::mesh(test::floor_quad(100), PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1})};
-  if (slab) nodes.push_back(test::box({-10, 4, -10}, {10, 5, 10}, *slab));
+  if (slab && ball) nodes.push_back(test::sphere({0.01f, 4.5f, 0.02f}, 1.5f, *slab));
+  if (slab && !ball) nodes.push_back(test::box({-10, 4, -10}, {10, 5, 10}, *slab));
   job.root = test::group(nodes);
   job.lights = {PointLight{{0, 10, 0}, {1, 1, 1}, {1, 0, 0}}};
   return test::TestJob(job).radiance({{0.01f, 1, 0.02f}, {0, -1, 0}}).g;
@@ -194,6 +196,8 @@ TEST(ClosedForm, ShadowsThroughASlabKeepTheRefractedShare) {
   EXPECT_NEAR(floor_under_slab(RefractiveMaterial{clear, 0.25f, 1, 1.5f}) / open, 0.75f * 0.75f, 1e-5f);
   EXPECT_EQ(floor_under_slab(PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1}), 0);      // opaque: none
   EXPECT_EQ(floor_under_slab(ReflectiveMaterial{clear, 0.5f}), 0);
+  // Through the middle of a glass ball: in and out at normal incidence too.
+  EXPECT_NEAR(floor_under_slab(FresnelMaterial{clear, 1, 1.5f}, true) / open, 0.96f * 0.96f, 1e-4f);
 }
 
 TEST(ClosedForm, TiltedVertexNormalsShadeWithTheirNormal) {

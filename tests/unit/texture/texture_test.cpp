@@ -96,8 +96,10 @@ TEST(PerlinNoise, TurbulenceAndFractalSumHalvingOctaves) {
 
 const Color kWhite(0.9f, 0.9f, 0.9f), kBlack(0.08f, 0.08f, 0.08f);
 
-TEST(TextureCheckerboard, CellsHaveTheScaleAsEdge) {
-  const CheckerboardTexture board{kWhite, kBlack, 2};
+TEST(TextureCheckerboard, CellsAreOneOverTheScaleWide) {
+  // Like every texture the point is multiplied by the scale: 0.5 gives 2-unit cells, and
+  // 0.25 (below) 4-unit cells, as Perlin features grow when their scale shrinks.
+  const CheckerboardTexture board{kWhite, kBlack, 0.5f};
   EXPECT_EQ(board.evaluate({0.5f, 0.5f, 0.5f}), kWhite);
   EXPECT_EQ(board.evaluate({1.9f, 1.9f, 1.9f}), kWhite);
   EXPECT_EQ(board.evaluate({2.5f, 0.5f, 0.5f}), kBlack);
@@ -106,10 +108,15 @@ TEST(TextureCheckerboard, CellsHaveTheScaleAsEdge) {
   EXPECT_EQ(board.evaluate({-0.5f, 0.5f, 0.5f}), kBlack);
   EXPECT_EQ(board.evaluate({-2.5f, 0.5f, 0.5f}), kWhite);
   EXPECT_EQ(board.evaluate({-0.5f, -0.5f, -0.5f}), kBlack);
+  const CheckerboardTexture coarse{kWhite, kBlack, 0.25f};
+  EXPECT_EQ(coarse.evaluate({3.9f, 0.5f, 0.5f}), kWhite);
+  EXPECT_EQ(coarse.evaluate({4.1f, 0.5f, 0.5f}), kBlack);
+  EXPECT_EQ(coarse.evaluate({0.5f, 7.9f, 0.5f}), kBlack);
+  EXPECT_EQ(coarse.evaluate({0.5f, 8.1f, 0.5f}), kWhite);
 }
 
 TEST(TextureCheckerboard, BothSidesOfACellEdge) {
-  const CheckerboardTexture board{kWhite, kBlack, 2};
+  const CheckerboardTexture board{kWhite, kBlack, 0.5f};
   // Clearly on either side of x = 2: different cells.
   EXPECT_EQ(board.evaluate({1.99f, 0.5f, 0.5f}), kWhite);
   EXPECT_EQ(board.evaluate({2.01f, 0.5f, 0.5f}), kBlack);
@@ -340,17 +347,62 @@ std::optional<Color> textured_kd(const World& world, const Ray& ray) {
   const auto hit = accel.intersect(ray, {});
   if (!hit) return std::nullopt;
   const SurfaceInteraction si = world.interaction(ray, *hit);
-  return phong_of(world.materials[si.material]).kd_at(si.object_point, si.uv);
+  return phong_of(world.materials[si.material]).kd_at(si);
 }
 
-Material marble_material() {
+Material marble_material(TextureSpace space = TextureSpace::kObject) {
   PhongMaterial m{{1, 1, 1}, {0, 0, 0}, 1};
   m.texture = std::make_shared<const Texture>(
       PerlinTexture{PerlinPattern::kMarble, Color(1, 1, 1), Color(0.1f, 0.1f, 0.2f), 2.5f});
+  m.texture_space = space;
   return m;
 }
 
-TEST(TextureWorld, SolidTexturesMoveWithTheirObjects) {
+TEST(TextureWorld, SolidTexturesReadTheWorldPointByDefault) {
+  // The same world point through a sphere placed two ways reads the same colour, the
+  // texture's at that world point.
+  const Material world_marble = marble_material(TextureSpace::kWorld);
+  const Point3 target(2.2f, 1.1f, -0.4f);
+  for (const Transform& world_from_node :
+       {Transform(), Transform::translate({0.5f, -0.3f, 0.2f}) * Transform::rotate(2, 40) * Transform::scale(1.4f, 0.8f, 1)}) {
+    RenderJob job;
+    // A big sphere whose surface passes through the target.
+    const Point3 node_target = world_from_node.inverse()(target);
+    const Point3 centre = node_target + Vector3(0, -3, 0);
+    job.root = test::group({test::sphere(centre, 3, world_marble)}, world_from_node);
+    const World world = flatten(job);
+    const Vector3 in = normalize(world_from_node(Vector3(0, -1, 0)));
+    const auto kd = textured_kd(world, {target - in * 5, in});
+    ASSERT_TRUE(kd);
+    expect_color_near(*kd, std::get<PerlinTexture>(*phong_of(world_marble).texture).evaluate(target), 2e-3f);
+  }
+}
+
+TEST(TextureWorld, ScaledCubeAndBoxOfTheSameExtentReadTheSameCheckerboard) {
+  // The original's rule: a 4×1×4 slab as a scaled gr.cube and as an nh_box (cut to the same
+  // top) show the same 4×4 cells of a 1-unit checkerboard, whatever their own frames.
+  PhongMaterial m{{1, 1, 1}, {0, 0, 0}, 1};
+  const CheckerboardTexture board{kWhite, kBlack, 1};
+  m.texture = std::make_shared<const Texture>(board);
+  auto cube = std::make_shared<SceneNode>();
+  cube->name = "slab";
+  cube->shape = UnitCube{};
+  cube->material = std::make_shared<Material>(m);
+  RenderJob scaled, boxed;
+  scaled.root = test::group({cube}, Transform::translate({-2, -1, -2}) * Transform::scale(4, 1, 4));
+  boxed.root = test::box({-2, -4, -2}, {2, 0, 2}, m);
+  const World a = flatten(scaled), b = flatten(boxed);
+  for (int i = 0; i < 16; ++i) {
+    const Point3 target(-1.5f + float(i % 4), 0, -1.5f + float(i / 4));
+    const Ray down{target + Vector3(0, 3, 0), {0, -1, 0}};
+    const auto from_cube = textured_kd(a, down), from_box = textured_kd(b, down);
+    ASSERT_TRUE(from_cube && from_box);
+    EXPECT_EQ(*from_cube, *from_box) << target.x << "," << target.z;
+    EXPECT_EQ(*from_cube, board.evaluate(target)) << target.x << "," << target.z;
+  }
+}
+
+TEST(TextureWorld, ObjectSpaceTexturesMoveWithTheirObjects) {
   // An nh_sphere (centre (1, 2, 3), radius 2) under two different parent transforms, hit at
   // the same point of its node frame: (1, 2, 3) + 2·d for a unit d.
   const Vector3 d = normalize(Vector3(0.3f, 0.5f, 0.8f));
@@ -389,10 +441,34 @@ TEST(TextureWorld, MeshTexturesMoveWithTheirMesh) {
   expect_color_near(seen[1], seen[0], 2e-3f);
 }
 
+TEST(TextureWorld, CheckerboardOnAScaledCubeFaceOnACellBoundaryDoesNotFlicker) {
+  // A gr.cube scaled to a 40×2×40 floor whose top lies on y = 0, a cell boundary of the
+  // world-space checkerboard: world hit points scatter across it by rounding, and every one
+  // must read the cell above.
+  PhongMaterial m{{0.9f, 0.9f, 0.9f}, {0, 0, 0}, 1};
+  const CheckerboardTexture board{kWhite, kBlack, 1};
+  m.texture = std::make_shared<const Texture>(board);
+  auto cube = std::make_shared<SceneNode>();
+  cube->name = "floor";
+  cube->shape = UnitCube{};
+  cube->material = std::make_shared<Material>(m);
+  RenderJob job;
+  job.root = test::group({cube}, Transform::translate({-20.3f, -2, -20.7f}) * Transform::rotate(1, 0) * Transform::scale(40, 2, 40));
+  const World world = flatten(job);
+  for (int i = 0; i < 400; ++i) {
+    const float x = -15 + 0.0737f * float(i), z = 9 - 0.0417f * float(i);
+    const Point3 target(x, 0, z);
+    const Vector3 dir = normalize(Vector3(0.4f, -1, 0.3f + 0.001f * float(i)));
+    const auto kd = textured_kd(world, {target - dir * 40, dir});
+    ASSERT_TRUE(kd);
+    EXPECT_EQ(*kd, board.evaluate({x, 0.5f, z})) << x << "," << z;
+  }
+}
+
 TEST(TextureWorld, CheckerboardFloorOnACellBoundaryDoesNotFlicker) {
   // spheres.lua's floor: an nh_box whose top face is y = 0, with 2-unit cells.
   PhongMaterial m{{0.9f, 0.9f, 0.9f}, {0, 0, 0}, 1};
-  const CheckerboardTexture board{kWhite, kBlack, 2};
+  const CheckerboardTexture board{kWhite, kBlack, 0.5f};
   m.texture = std::make_shared<const Texture>(board);
   RenderJob job;
   job.root = test::box({-200, -400, -200}, {200, 0, 200}, m);
