@@ -118,10 +118,15 @@ template <BvhQuery kQuery>
 bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
   if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
   const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_};
+  constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
-  if (use_avx_) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
+  if (use_avx_) {
+    if constexpr (kQuery == BvhQuery::kClosest) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
+    else return avx::traverse_any<kFiltered>(view, ray, t_range, filter);
+  }
 #endif
-  return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
+  if constexpr (kQuery == BvhQuery::kClosest) return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
+  else return baseline::traverse_any<kFiltered>(view, ray, t_range, filter);
 }
 
 std::optional<Hit> Bvh::intersect(const Ray& ray, Interval t_range) const {
