@@ -59,7 +59,8 @@ JobStatistics render_job_locally(const SceneDescription& scene, size_t index, co
   std::error_code ignored;
   std::filesystem::remove(state_path, ignored);
   stats.peak_rss_bytes = peak_rss_bytes();
-  if (!run.quiet || run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
+  if (run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
+  else if (!run.quiet) std::fprintf(stderr, "mjray: wrote %s\n", stats.image.c_str());
   return stats;
 }
 

@@ -12,8 +12,8 @@ namespace mjray {
 
 /// How the local driver reports and resumes.
 struct LocalRunOptions {
-  bool quiet = false;         ///< no progress (the summary still prints with print_stats)
-  bool print_stats = false;   ///< the summary even when quiet
+  bool quiet = false;         ///< no progress and no "wrote FILE" line (warnings still print)
+  bool print_stats = false;   ///< the statistics after each image, also when quiet
   bool resume = false;        ///< continue from the image's state file
   double snapshot_interval_seconds = 5;
 };

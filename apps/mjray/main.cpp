@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
     std::printf("mjray %s\n", MJRAY_VERSION);
     return 0;
   }
+  for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
 
   try {
     const auto start = std::chrono::steady_clock::now();

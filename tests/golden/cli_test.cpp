@@ -217,6 +217,72 @@ TEST_F(GoldenCli, OriginalShortOptionsAreAccepted) {
   EXPECT_EQ(read_image(dir_ / "out.png").width(), 4);
 }
 
+TEST_F(GoldenCli, GetoptConventionsAttachedValuesAndGroupedFlags) {
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 4, 3));
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"-r4", "-a4", "-s4", "-f2"}, {"-og", "5"}, {"-og5"}, {"-j2", "--seed=7", "--threads=1"}, {"--"}}) {
+    std::vector<std::string> all = args;
+    all.insert(all.begin(), "--quiet");
+    all.push_back(scene.string());
+    const RunResult r = run(all);
+    EXPECT_EQ(r.exit_code, 0) << args[0] << ": " << r.err;
+  }
+  // The grouped -o still asks for the grid: the statistics name it.
+  const RunResult r = run({"-og", "5", "--quiet", "--stats", scene.string()});
+  EXPECT_NE(r.err.find("(grid, 1 primitives)"), std::string::npos) << r.err;
+  const std::string hint = "(run 'mjray --help' for the options)\n";
+  EXPECT_EQ(run({"-ox", scene.string()}).err, "mjray: unknown option '-x' in '-ox'\n" + hint);
+  EXPECT_EQ(run({"-r"}).err, "mjray: -r needs a value\n" + hint);
+  EXPECT_EQ(run({"-rx", scene.string()}).err, "mjray: -r expects a whole number from 0 to 1000, got 'x'\n" + hint);
+  EXPECT_EQ(run({"--stats=yes", scene.string()}).err, "mjray: --stats takes no value, got '--stats=yes'\n" + hint);
+}
+
+TEST_F(GoldenCli, OWithAFileNameSuggestsOutput) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const RunResult r = run({"-o", "out.png", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: -o takes no value: did you mean --output out.png? (-o asks for the uniform grid of optimal "
+                   "size)\n(run 'mjray --help' for the options)\n");
+  EXPECT_EQ(listing(dir_), "scene.lua");
+}
+
+TEST_F(GoldenCli, GridOptionsWithAnotherAcceleratorWarn) {
+  const auto scene = write("scene.lua", tiny_scene());
+  RunResult r = run({"--accel", "bvh", "-g", "10", "--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.err, "mjray: warning: -g has no effect with --accel bvh (it sizes the grid of --accel grid)\n");
+  r = run({"--accel", "none", "-o", "--quiet", scene.string()});
+  EXPECT_EQ(r.err, "mjray: warning: -o has no effect with --accel none (it sizes the grid of --accel grid)\n");
+  r = run({"--accel", "grid", "-g", "10", "--quiet", scene.string()});
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(GoldenCli, HelpListsEveryAcceleratorOfThisBuild) {
+  const RunResult r = run({"--help"});
+#ifdef MJRAY_HAVE_EMBREE
+  EXPECT_NE(r.out.find("--accel KIND         acceleration structure: bvh (default), grid, none, embree\n"), std::string::npos)
+      << r.out;
+#else
+  EXPECT_NE(r.out.find("(embree: not in this build)"), std::string::npos) << r.out;
+#endif
+}
+
+TEST_F(GoldenCli, StatisticsPrintOnlyWhenAskedAndQuietLeavesOnlyThem) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const std::string image = (dir_ / "out.png").string();
+  RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.err.find("mjray: wrote " + image + "\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("primary"), std::string::npos) << r.err;
+  r = run({"--stats", scene.string()});
+  EXPECT_NE(r.err.find("mjray: wrote " + image + "\n  time "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("  rays      48 primary"), std::string::npos) << r.err;
+  r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.err, "");
+  r = run({"--quiet", "--stats", scene.string()});
+  EXPECT_EQ(r.err.rfind("mjray: wrote " + image + "\n  time ", 0), 0u) << r.err;
+}
+
 TEST_F(GoldenCli, SandboxIsOnByDefaultAndUnsafeLuaLiftsIt) {
   const auto scene = write("scene.lua", "os.execute('true')\n" + tiny_scene());
   RunResult r = run({"--quiet", scene.string()});
