@@ -302,5 +302,16 @@ TEST_F(GoldenCli, RelativeSceneNameResolvesAgainstTheWorkingDirectory) {
   EXPECT_TRUE(fs::exists(dir_ / "rel.png"));
 }
 
+TEST_F(GoldenCli, RenderShWorksFromAnyFolderWithOptionsInAnyOrder) {
+  write("scenes/a.lua", tiny_scene("'a.png'", 3, 3));
+  write("scenes/b.lua", tiny_scene("'b.png'", 3, 3));
+  const std::string prefix = "cd " + quoted(dir_.string()) + " && MJRAY_BINARY=" + quoted(test::mjray_binary().string()) +
+                             " " + quoted((test::source_dir() / "render.sh").string());
+  EXPECT_EQ(std::system((prefix + " -s 2 --quiet scenes/a.lua >/dev/null 2>&1").c_str()), 0);
+  EXPECT_EQ(std::system((prefix + " scenes/b.lua -a 2 --quiet >/dev/null 2>&1").c_str()), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "scenes/a.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "scenes/b.png"));
+}
+
 }  // namespace
 }  // namespace mjray
