@@ -252,6 +252,7 @@ JobOptions job_options(const CommandLine& cl) {
   o.render.antialias_threshold = cl.antialias_threshold;
   o.outputs.output = cl.output;
   o.outputs.outdir = cl.outdir;
+  o.outputs.confine_script_outputs = !cl.load.unsafe_lua;
   o.outputs.encoding.gamma = cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear;
   return o;
 }

@@ -52,9 +52,11 @@ int main(int argc, char** argv) {
     const SceneDescription scene = load_scene(cl.scene, cl.load);
     const double parse_seconds = seconds_since(start);
     for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (!cl.quiet)
+      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
     const JobOptions options = job_options(cl);
     // Before rendering, so that a bad output costs no render time.
-    check_outputs(scene, options.outputs);
+    for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
     install_interrupt_handlers();
     const LocalRunOptions run{cl.quiet, cl.print_stats, cl.resume};

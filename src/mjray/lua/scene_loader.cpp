@@ -58,6 +58,12 @@ void record_input(lua_State* L, const std::filesystem::path& path) {
   context(L).description->inputs.push_back(path);
 }
 
+void add_warning(lua_State* L, const std::string& text) {
+  LoaderContext& ctx = context(L);
+  const std::string warning = caller_location(L).to_string() + ": " + text;
+  if (ctx.warned.insert(warning).second) ctx.description->warnings.push_back(warning);
+}
+
 std::string not_found_message(const std::string& name) {
   return "cannot find '" + name +
          "' (looked in the scene's folder, its parent folders, their Assets/ folders and the working directory)";
@@ -248,6 +254,7 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   if (!options.unsafe_lua) lua::install_sandbox(L);
   lua::register_gr(L);
   lua::register_extensions(L);
+  lua::guard_gr_names(L);
 
   std::error_code ec;
   if (!std::filesystem::exists(script, ec))
