@@ -562,6 +562,26 @@ TEST_F(LuaErrors, MalformedObjFileNamesBothTheSceneLineAndTheObjLine) {
   EXPECT_EQ(message.rfind(at(3) + "gr.mesh: " + obj.string() + ":3: ", 0), 0u) << message;
 }
 
+TEST_F(LuaErrors, GarbageObjFilesAreErrorsNamingTheFile) {
+  const auto obj = write("junk.obj", "hello world\n");
+  EXPECT_EQ(error_of("m = gr.mesh('m', 'junk.obj')\n"),
+            at(1) + "gr.mesh: " + obj.string() + ": no vertices ('v x y z' lines) in this OBJ file; line 1 starts with "
+                    "'hello', which is not an OBJ statement: is it an OBJ file?");
+  write("points.obj", "# only points\nv 0 0 0\nv 1 0 0\np 1 2\n");
+  EXPECT_EQ(error_of("m = gr.extendedmesh('m', false, read_extended_obj('points.obj'))\n"),
+            at(1) + "read_extended_obj: " + (dir_ / "points.obj").string() +
+                    ": no faces ('f' lines) in this OBJ file, so it would draw nothing");
+  EXPECT_EQ(error_of("v, f = readobj('junk.obj')\n").rfind(at(1) + "readobj: " + obj.string() + ": no vertices", 0), 0u);
+}
+
+TEST_F(LuaScene, ObjFileMostlyNotObjWarns) {
+  const auto obj = write("odd.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nfoo 1\nbar 2\nbaz 3\nqux 4\nquux 5\n");
+  const auto scene = load("root = gr.node('root')\nm = gr.mesh('m', 'odd.obj')\nroot:add_child(m)\n" + render_call());
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0], at(2) + obj.string() + ": 5 of its 9 statements are not OBJ; line 5 starts with 'foo', "
+                                       "which is not an OBJ statement: is it an OBJ file?");
+}
+
 TEST_F(LuaErrors, TableMeshIndexOutOfRange) {
   EXPECT_EQ(error_of("m = gr.mesh('m', {{0,0,0}, {1,0,0}, {0,1,0}},\n  {{0, 1, 3}})\n"),
             at(1) + "gr.mesh: face 1 has index 3 outside 0..2");

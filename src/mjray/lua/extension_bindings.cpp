@@ -98,7 +98,13 @@ int read_extended_obj(lua_State* L) {
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError("read_extended_obj: cannot find '" + name + "'");
   record_input(L, *path);
-  push_shared(L, std::make_shared<const TriangleMesh>(load_obj(*path)), kObjDataType);
+  std::shared_ptr<const TriangleMesh> mesh;
+  try {
+    mesh = load_checked_obj(L, *path);
+  } catch (const SceneError& e) {
+    throw ArgumentError(std::string("read_extended_obj: ") + e.what());
+  }
+  push_shared(L, std::move(mesh), kObjDataType);
   return 1;
 }
 

@@ -121,7 +121,7 @@ std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::string& n
   const auto key = std::filesystem::weakly_canonical(*path);
   auto& cached = ctx.mesh_cache[key];
   try {
-    if (!cached) cached = std::make_shared<TriangleMesh>(load_obj(*path));
+    if (!cached) cached = load_checked_obj(L, *path);
   } catch (const SceneError& e) {
     // "OBJFILE:LINE: problem" becomes "scene.lua:LINE: gr.mesh: OBJFILE:LINE: problem".
     throw ArgumentError(std::string(fn) + ": " + e.what());

@@ -127,6 +127,10 @@ void guard_gr_names(lua_State* L);
 /// Adds a file the script reads to SceneDescription::inputs.
 void record_input(lua_State* L, const std::filesystem::path& path);
 
+/// Reads an OBJ file a scene draws: SceneError for malformed or empty files (no vertices or
+/// no faces), a warning when most of it is not OBJ.
+std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path);
+
 /// Adds "file:line: text" (the caller's line) to SceneDescription::warnings, once per line
 /// and text.
 void add_warning(lua_State* L, const std::string& text);

@@ -17,6 +17,7 @@ extern "C" {
 #include <lualib.h>
 }
 
+#include "mjray/io/obj_loader.h"
 #include "mjray/lua/lua_context.h"
 
 namespace mjray {
@@ -62,6 +63,13 @@ void add_warning(lua_State* L, const std::string& text) {
   LoaderContext& ctx = context(L);
   const std::string warning = caller_location(L).to_string() + ": " + text;
   if (ctx.warned.insert(warning).second) ctx.description->warnings.push_back(warning);
+}
+
+std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path) {
+  ObjSummary summary;
+  auto mesh = std::make_shared<const TriangleMesh>(load_obj(path, &summary));
+  if (const std::string warning = check_obj_content(*mesh, summary, path.string()); !warning.empty()) add_warning(L, warning);
+  return mesh;
 }
 
 std::string not_found_message(const std::string& name) {
