@@ -106,6 +106,7 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--gamma", [&](auto& o, auto& v) {
          if (v != "linear" && v != "srgb") throw UsageError(o + " expects linear or srgb, got '" + v + "'");
          cl.srgb = v == "srgb";
+         cl.load.srgb_textures = cl.srgb;
        }},
       {"--transform-order", [&](auto& o, auto& v) {
          if (v == "pre") cl.load.transform_order = TransformOrder::kPre;

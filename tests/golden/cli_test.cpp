@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
@@ -281,6 +282,31 @@ TEST_F(GoldenCli, StatisticsPrintOnlyWhenAskedAndQuietLeavesOnlyThem) {
   EXPECT_EQ(r.err, "");
   r = run({"--quiet", "--stats", scene.string()});
   EXPECT_EQ(r.err.rfind("mjray: wrote " + image + "\n  time ", 0), 0u) << r.err;
+}
+
+TEST_F(GoldenCli, SrgbOutputDecodesImageTexturesSoTheyKeepTheirValues) {
+  // A uniform texture of value 128 on a box that fills the view, lit by ambient 1 only: the
+  // image shows the texture as it is stored, with either gamma.
+  Image texture(2, 2);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) texture.at(x, y) = Color(128 / 255.0f, 64 / 255.0f, 200 / 255.0f);
+  write_image(texture, dir_ / "grey.png");
+  const auto scene = write("scene.lua",
+                           "m = gr.material({1, 1, 1}, {0, 0, 0}, 1)\n"
+                           "m:set_material_texture(gr.filetexture('grey.png'))\n"
+                           "wall = gr.nh_box('wall', {-50, -50, -110}, 100)\n"
+                           "wall:set_material(m)\n"
+                           "gr.render(wall, 'out.png', 4, 4, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 30, {1, 1, 1},\n"
+                           "          {gr.light({0, 0, 5}, {0, 0, 0}, {1, 0, 0})})\n");
+  for (const char* gamma : {"linear", "srgb"}) {
+    const RunResult r = run({"--quiet", "--gamma", gamma, scene.string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Image image = read_image(dir_ / "out.png");
+    // read_image gives v/255 of the stored bytes.
+    EXPECT_NEAR(image.at(2, 2).r * 255, 128, 1) << gamma;
+    EXPECT_NEAR(image.at(2, 2).g * 255, 64, 1) << gamma;
+    EXPECT_NEAR(image.at(2, 2).b * 255, 200, 1) << gamma;
+  }
 }
 
 TEST_F(GoldenCli, SandboxIsOnByDefaultAndUnsafeLuaLiftsIt) {

@@ -59,6 +59,7 @@ std::string job_fingerprint(const SceneDescription& scene, size_t index, const J
   line("anti-aliasing passes", std::to_string(o.render.antialias_max_passes));
   line("--seed", std::to_string(o.render.seed));
   line("tile size", std::to_string(o.render.tile_size));
+  line("--gamma", o.outputs.encoding.gamma == OutputGamma::kSrgb ? "srgb" : "linear");  // decodes textures too
   return text;
 }
 
