@@ -14,7 +14,6 @@
 #include "render_watcher.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/lua/scene_loader.h"
-#include "mjray/render/render_checkpoint.h"
 
 namespace {
 
@@ -61,11 +60,9 @@ int main(int argc, char** argv) {
     install_interrupt_handlers();
     const LocalRunOptions run{cl.quiet, cl.print_stats, cl.resume};
     std::vector<JobStatistics> statistics;
+    const JobFingerprints fingerprints(scene, options);
     for (size_t i = 0; i < scene.jobs.size(); ++i) {
-      // With --resume, jobs whose image is complete (no state file beside it) are done.
-      const auto path = output_path(scene, i, options.outputs);
-      if (cl.resume && !std::filesystem::exists(checkpoint_path(path)) && std::filesystem::exists(path)) continue;
-      statistics.push_back(render_job_locally(scene, i, options, run, parse_seconds));
+      if (auto stats = render_job_locally(scene, i, options, fingerprints, run, parse_seconds)) statistics.push_back(*stats);
       if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
     }
   } catch (const Interrupted&) {
