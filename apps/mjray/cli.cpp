@@ -3,9 +3,10 @@
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
-#include <limits>
 #include <functional>
+#include <limits>
 #include <map>
+#include <utility>
 
 namespace mjray {
 
@@ -41,12 +42,163 @@ size_t parse_bytes(const std::string& option, const std::string& text) {
   return size_t(bytes);
 }
 
+/// A number in (lo, hi], for --aa-threshold and --scene-timeout.
+double parse_real(const std::string& option, const std::string& text, double lo, double hi, const std::string& expected) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value > lo && value <= hi))
+    throw UsageError(option + " expects " + expected + ", got '" + text + "'");
+  return value;
+}
+
+#ifdef MJRAY_HAVE_EMBREE
+constexpr const char* kAccelKinds = "bvh (default), grid, none, embree";
+#else
+constexpr const char* kAccelKinds = "bvh (default), grid, none (embree: not in this build)";
+#endif
+
+using ValueHandler = std::function<void(const std::string& option, const std::string& value)>;
+using FlagHandler = std::function<void()>;
+
+/// The options of the command line, by every name they have, and the argument walk.
+class Parser {
+ public:
+  explicit Parser(CommandLine& cl);
+  void parse(const std::vector<std::string>& args);
+
+ private:
+  void long_option(const std::string& arg, const std::vector<std::string>& args, size_t& i);
+  void short_options(const std::string& arg, const std::vector<std::string>& args, size_t& i);
+
+  CommandLine& cl_;
+  std::map<std::string, ValueHandler> with_value_;
+  std::map<std::string, FlagHandler> flags_;
+  std::vector<std::string> positional_;
+  bool o_ends_argument_ = false;                   // the last argument ended with the flag -o
+  size_t positional_after_o_ = std::string::npos;  // in positional_: the argument right after -o
+};
+
+Parser::Parser(CommandLine& cl) : cl_(cl) {
+  constexpr long long kMaxInt = 1 << 30;
+  const ValueHandler threads = [&](auto& o, auto& v) { cl.threads = int(parse_integer(o, v, 1, 4096)); };
+  with_value_ = {
+      {"-r", [&](auto& o, auto& v) { cl.max_reflection_depth = int(parse_integer(o, v, 0, 1000)); }},
+      {"-f", [&](auto& o, auto& v) { cl.max_refraction_depth = int(parse_integer(o, v, 0, 1000)); }},
+      {"-g", [&](auto& o, auto& v) { cl.grid_size = int(parse_integer(o, v, 0, 4096)); }},
+      {"-s", [&](auto& o, auto& v) { cl.area_light_samples = int(parse_integer(o, v, 1, 1024)); }},
+      {"-a", [&](auto& o, auto& v) { cl.antialias_samples = int(parse_integer(o, v, 0, 64)); }},
+      {"-j", threads},
+      {"--threads", threads},
+      {"--seed", [&](auto& o, auto& v) { cl.seed = uint64_t(parse_integer(o, v, 0, kMaxInt * kMaxInt)); }},
+      {"--aa-threshold", [&](auto& o, auto& v) { cl.antialias_threshold = float(parse_real(o, v, 0, 1, "a number in (0, 1]")); }},
+      {"--lua-memory", [&](auto& o, auto& v) { cl.load.lua_memory_bytes = parse_bytes(o, v); }},
+      {"--scene-timeout", [&](auto& o, auto& v) {
+         cl.load.timeout_seconds = parse_real(o, v, 0, 1e6, "a number of seconds from 0 to 1000000");
+       }},
+      {"--output", [&](auto&, auto& v) { cl.output = v; }},
+      {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
+      {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},
+      {"--accel", [&](auto& o, auto& v) {
+         if (v != "bvh" && v != "grid" && v != "none" && v != "embree")
+           throw UsageError(o + " expects bvh, grid, none or embree, got '" + v + "'");
+         cl.accel = v;
+       }},
+      {"--gamma", [&](auto& o, auto& v) {
+         if (v != "linear" && v != "srgb") throw UsageError(o + " expects linear or srgb, got '" + v + "'");
+         cl.srgb = v == "srgb";
+         cl.load.srgb_textures = cl.srgb;
+       }},
+      {"--transform-order", [&](auto& o, auto& v) {
+         if (v == "pre") cl.load.transform_order = TransformOrder::kPre;
+         else if (v == "post") cl.load.transform_order = TransformOrder::kPost;
+         else if (v == "auto") cl.load.transform_order = TransformOrder::kAuto;
+         else throw UsageError(o + " expects pre, post or auto, got '" + v + "'");
+       }},
+  };
+  flags_ = {
+      {"-o", [&] { cl.optimal_grid = true; }},
+      {"--stats", [&] { cl.print_stats = true; }},
+      {"--quiet", [&] { cl.quiet = true; }},
+      {"--resume", [&] { cl.resume = true; }},
+      {"--unsafe-lua", [&] { cl.load.unsafe_lua = true; }},
+      {"-h", [&] { cl.show_help = true; }},
+      {"--help", [&] { cl.show_help = true; }},
+      {"--version", [&] { cl.show_version = true; }},
+  };
+}
+
+void Parser::long_option(const std::string& arg, const std::vector<std::string>& args, size_t& i) {
+  const size_t eq = arg.find('=');
+  const std::string name = arg.substr(0, eq);
+  if (const auto flag = flags_.find(name); flag != flags_.end()) {
+    if (eq != std::string::npos) throw UsageError(name + " takes no value, got '" + arg + "'");
+    flag->second();
+    return;
+  }
+  const auto option = with_value_.find(name);
+  if (option == with_value_.end()) throw UsageError("unknown option '" + name + "'");
+  if (eq != std::string::npos) return option->second(name, arg.substr(eq + 1));
+  if (i + 1 >= args.size()) throw UsageError(name + " needs a value");
+  option->second(name, args[++i]);
+}
+
+// getopt style: "-r4", "-r 4", and flags grouped with at most one valued option last: "-og 5".
+void Parser::short_options(const std::string& arg, const std::vector<std::string>& args, size_t& i) {
+  for (size_t k = 1; k < arg.size(); ++k) {
+    const std::string name = std::string("-") + arg[k];
+    if (const auto flag = flags_.find(name); flag != flags_.end()) {
+      flag->second();
+      o_ends_argument_ = name == "-o" && k + 1 == arg.size();
+      continue;
+    }
+    const auto option = with_value_.find(name);
+    if (option == with_value_.end())
+      throw UsageError(k == 1 ? "unknown option '" + arg + "'" : "unknown option '" + name + "' in '" + arg + "'");
+    if (k + 1 < arg.size()) return option->second(name, arg.substr(k + 1));
+    if (i + 1 >= args.size()) throw UsageError(name + " needs a value");
+    return option->second(name, args[++i]);
+  }
+}
+
+void Parser::parse(const std::vector<std::string>& args) {
+  bool options_ended = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const bool follows_o = std::exchange(o_ends_argument_, false);
+    if (options_ended || arg.size() < 2 || arg[0] != '-') {
+      if (follows_o) positional_after_o_ = positional_.size();
+      positional_.push_back(arg);
+    } else if (arg == "--") options_ended = true;
+    else if (arg[1] == '-') long_option(arg, args, i);
+    else short_options(arg, args, i);
+  }
+  if (cl_.show_help || cl_.show_version) return;
+  // "-o out.png scene.lua": the original's -o is the optimal grid, not an output file.
+  if (positional_.size() == 2 && positional_after_o_ < 2 && !positional_[positional_after_o_].ends_with(".lua"))
+    throw UsageError("-o takes no value: did you mean --output " + positional_[positional_after_o_] +
+                     "? (-o asks for the uniform grid of optimal size)");
+  if (positional_.size() != 1)
+    throw UsageError(positional_.empty() ? "no scene file given" : "give exactly one scene file");
+  cl_.scene = positional_[0];
+  if (cl_.output && cl_.outdir) throw UsageError("--output and --outdir cannot be used together");
+}
+
+/// Options that change nothing with the others given, each named once.
+std::vector<std::string> ignored_options(const CommandLine& cl) {
+  std::vector<std::string> warnings;
+  if (cl.accel.empty() || cl.accel == "grid") return warnings;
+  if (cl.grid_size) warnings.push_back("-g has no effect with --accel " + cl.accel + " (it sizes the grid of --accel grid)");
+  if (cl.optimal_grid) warnings.push_back("-o has no effect with --accel " + cl.accel + " (it sizes the grid of --accel grid)");
+  return warnings;
+}
+
 }  // namespace
 
 std::string usage_text() {
-  return R"(usage: mjray [options] scene.lua
+  return std::string(R"(usage: mjray [options] scene.lua
 
-Renders the images a Lua scene script asks for with gr.render(...).
+Renders the images a Lua scene script asks for with gr.render(...). Short options take their
+value attached or apart and group as with getopt: -s4, -s 4, -og 5.
 
 options:
   -r N                 max reflection depth (default 8)
@@ -56,20 +208,23 @@ options:
   -s N                 area-light samples: an N x N jittered grid (default 1)
   -a N                 adaptive anti-aliasing with N x N samples in bad pixels (default 0: off)
   --aa-threshold T     colour difference from a neighbour that makes a pixel bad (default 0.1)
-  --accel KIND         acceleration structure: bvh (default), grid, none
+  --accel KIND         acceleration structure: )") + kAccelKinds + R"(
   -j, --threads N      worker threads (default: all cores)
-  --output FILE        write the (single) image to FILE
-  --outdir DIR         write every image into DIR
-  --stats              print the statistics
+  --output FILE        write the (single) image to FILE (its folder is created)
+  --outdir DIR         write every image into DIR (created), under the file name gr.render gives
+  --stats              print the statistics of each image (time, rays, memory)
   --stats-json FILE    write the statistics as JSON
   --seed N             seed of all random sampling (default 0)
-  --gamma linear|srgb  encoding of 8-bit output (default linear, as CS 488)
+  --gamma linear|srgb  encoding of 8-bit output (default linear, as CS 488); srgb also decodes
+                       8-bit image textures from sRGB
   --transform-order pre|post|auto
-                       how node transforms compose (default auto: post for scripts that
-                       build table-form meshes, as the old course skeleton, else pre)
-  --quiet              no progress output
-  --resume             continue an interrupted render
-  --unsafe-lua         give the script the full Lua standard library
+                       how node transforms compose (default auto: post when the first
+                       gr.render draws a table-form gr.mesh or a gr.extendedmesh, else pre)
+  --quiet              only warnings and errors (and the statistics that --stats asks for)
+  --resume             finish an interrupted render or animation: keep complete images,
+                       resume the interrupted one, render the rest
+  --unsafe-lua         give the script the full Lua standard library and let it write images
+                       outside the scene's folder and the working directory
   --lua-memory SIZE    most memory the script's Lua state may use, e.g. 512MiB (default 4GiB;
                        0 = no limit)
   --scene-timeout S    stop a script still running after S seconds (default: no limit)
@@ -98,95 +253,15 @@ JobOptions job_options(const CommandLine& cl) {
   o.render.antialias_threshold = cl.antialias_threshold;
   o.outputs.output = cl.output;
   o.outputs.outdir = cl.outdir;
+  o.outputs.confine_script_outputs = !cl.load.unsafe_lua;
   o.outputs.encoding.gamma = cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear;
   return o;
 }
 
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine cl;
-  constexpr long long kMaxInt = 1 << 30;
-  // Options that take a value, by every name they have.
-  std::map<std::string, std::function<void(const std::string&, const std::string&)>> with_value = {
-      {"-r", [&](auto& o, auto& v) { cl.max_reflection_depth = int(parse_integer(o, v, 0, 1000)); }},
-      {"-f", [&](auto& o, auto& v) { cl.max_refraction_depth = int(parse_integer(o, v, 0, 1000)); }},
-      {"-g", [&](auto& o, auto& v) { cl.grid_size = int(parse_integer(o, v, 0, 4096)); }},
-      {"-s", [&](auto& o, auto& v) { cl.area_light_samples = int(parse_integer(o, v, 1, 1024)); }},
-      {"-a", [&](auto& o, auto& v) { cl.antialias_samples = int(parse_integer(o, v, 0, 64)); }},
-      {"-j", [&](auto& o, auto& v) { cl.threads = int(parse_integer(o, v, 1, 4096)); }},
-      {"--threads", [&](auto& o, auto& v) { cl.threads = int(parse_integer(o, v, 1, 4096)); }},
-      {"--seed", [&](auto& o, auto& v) { cl.seed = uint64_t(parse_integer(o, v, 0, kMaxInt * kMaxInt)); }},
-      {"--aa-threshold", [&](auto& o, auto& v) {
-         char* end = nullptr;
-         const double t = std::strtod(v.c_str(), &end);
-         if (v.empty() || *end != '\0' || !(t > 0 && t <= 1)) throw UsageError(o + " expects a number in (0, 1], got '" + v + "'");
-         cl.antialias_threshold = float(t);
-       }},
-      {"--lua-memory", [&](auto& o, auto& v) { cl.load.lua_memory_bytes = parse_bytes(o, v); }},
-      {"--scene-timeout", [&](auto& o, auto& v) {
-         char* end = nullptr;
-         const double t = std::strtod(v.c_str(), &end);
-         if (v.empty() || *end != '\0' || !(t > 0 && t <= 1e6))
-           throw UsageError(o + " expects a number of seconds from 0 to 1000000, got '" + v + "'");
-         cl.load.timeout_seconds = t;
-       }},
-      {"--output", [&](auto&, auto& v) { cl.output = v; }},
-      {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
-      {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},
-      {"--accel", [&](auto& o, auto& v) {
-         if (v != "bvh" && v != "grid" && v != "none" && v != "embree")
-           throw UsageError(o + " expects bvh, grid, none or embree, got '" + v + "'");
-         cl.accel = v;
-       }},
-      {"--gamma", [&](auto& o, auto& v) {
-         if (v != "linear" && v != "srgb") throw UsageError(o + " expects linear or srgb, got '" + v + "'");
-         cl.srgb = v == "srgb";
-       }},
-      {"--transform-order", [&](auto& o, auto& v) {
-         if (v == "pre") cl.load.transform_order = TransformOrder::kPre;
-         else if (v == "post") cl.load.transform_order = TransformOrder::kPost;
-         else if (v == "auto") cl.load.transform_order = TransformOrder::kAuto;
-         else throw UsageError(o + " expects pre, post or auto, got '" + v + "'");
-       }},
-  };
-  const std::map<std::string, std::function<void()>> flags = {
-      {"-o", [&] { cl.optimal_grid = true; }},
-      {"--stats", [&] { cl.print_stats = true; }},
-      {"--quiet", [&] { cl.quiet = true; }},
-      {"--resume", [&] { cl.resume = true; }},
-      {"--unsafe-lua", [&] { cl.load.unsafe_lua = true; }},
-      {"-h", [&] { cl.show_help = true; }},
-      {"--help", [&] { cl.show_help = true; }},
-      {"--version", [&] { cl.show_version = true; }},
-  };
-
-  std::vector<std::string> positional;
-  for (size_t i = 0; i < args.size(); ++i) {
-    std::string arg = args[i], value;
-    bool has_inline_value = false;
-    if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos) {
-      value = arg.substr(arg.find('=') + 1);
-      arg = arg.substr(0, arg.find('='));
-      has_inline_value = true;
-    }
-    if (auto flag = flags.find(arg); flag != flags.end() && !has_inline_value) {
-      flag->second();
-    } else if (auto option = with_value.find(arg); option != with_value.end()) {
-      if (!has_inline_value) {
-        if (i + 1 >= args.size()) throw UsageError(arg + " needs a value");
-        value = args[++i];
-      }
-      option->second(arg, value);
-    } else if (arg.size() > 1 && arg[0] == '-') {
-      throw UsageError("unknown option '" + arg + "'");
-    } else {
-      positional.push_back(arg);
-    }
-  }
-  if (cl.show_help || cl.show_version) return cl;
-  if (positional.size() != 1)
-    throw UsageError(positional.empty() ? "no scene file given" : "give exactly one scene file");
-  cl.scene = positional[0];
-  if (cl.output && cl.outdir) throw UsageError("--output and --outdir cannot be used together");
+  Parser(cl).parse(args);
+  cl.warnings = ignored_options(cl);
   return cl;
 }
 

@@ -34,6 +34,7 @@ struct CommandLine {
   SceneLoadOptions load;
   bool show_help = false;
   bool show_version = false;
+  std::vector<std::string> warnings;   ///< options that change nothing with the others given
 };
 
 /// Thrown for a bad command line; main prints it with the usage hint and exits 2.
@@ -42,7 +43,8 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Parses argv; throws UsageError.
+/// Parses argv with getopt's conventions (-s4, -s 4, grouped flags -og 5, --name=value, --
+/// ends the options); throws UsageError.
 CommandLine parse_command_line(const std::vector<std::string>& args);
 
 /// The job options the command line asks for: --accel wins, then -o, then -g (0 = none), else

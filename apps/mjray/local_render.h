@@ -2,9 +2,11 @@
 /// Renders one job on this machine as a user at a terminal expects: progress, incremental
 /// images, Ctrl-C keeping the partial image and its state, --resume finishing it.
 
+#include <optional>
 #include <string>
 
 #include "job_statistics.h"
+#include "mjray/job/job_fingerprint.h"
 #include "mjray/job/job_options.h"
 #include "mjray/scene/scene_description.h"
 
@@ -12,9 +14,11 @@ namespace mjray {
 
 /// How the local driver reports and resumes.
 struct LocalRunOptions {
-  bool quiet = false;         ///< no progress (the summary still prints with print_stats)
-  bool print_stats = false;   ///< the summary even when quiet
-  bool resume = false;        ///< continue from the image's state file
+  bool quiet = false;         ///< no progress and no "wrote FILE" line (warnings still print)
+  bool print_stats = false;   ///< the statistics after each image, also when quiet
+  /// Finish an interrupted run: resume from the image's state file when there is one, keep a
+  /// complete image that records this job's fingerprint, render an absent one.
+  bool resume = false;
   double snapshot_interval_seconds = 5;
 };
 
@@ -22,9 +26,11 @@ struct LocalRunOptions {
 /// the program exits 130.
 struct Interrupted {};
 
-/// Prepares and renders job `index` of `scene`, writes its image and returns its statistics.
-/// Throws Interrupted, SceneError or OutputError.
-JobStatistics render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
-                                 const LocalRunOptions& run, double parse_seconds);
+/// Prepares and renders job `index` of `scene`, writes its image (recording the job's
+/// fingerprint) and returns its statistics; nothing when --resume keeps the image. Throws
+/// Interrupted, SceneError (also for a resume refused, saying what differs) or OutputError.
+std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
+                                                const JobFingerprints& fingerprints, const LocalRunOptions& run,
+                                                double parse_seconds);
 
 }  // namespace mjray

@@ -14,7 +14,6 @@
 #include "render_watcher.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/lua/scene_loader.h"
-#include "mjray/render/render_checkpoint.h"
 
 namespace {
 
@@ -45,24 +44,25 @@ int main(int argc, char** argv) {
     std::printf("mjray %s\n", MJRAY_VERSION);
     return 0;
   }
+  for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
 
   try {
     const auto start = std::chrono::steady_clock::now();
     const SceneDescription scene = load_scene(cl.scene, cl.load);
     const double parse_seconds = seconds_since(start);
     for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (!cl.quiet)
+      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
     const JobOptions options = job_options(cl);
     // Before rendering, so that a bad output costs no render time.
-    check_outputs(scene, options.outputs);
+    for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
     install_interrupt_handlers();
     const LocalRunOptions run{cl.quiet, cl.print_stats, cl.resume};
     std::vector<JobStatistics> statistics;
+    const JobFingerprints fingerprints(scene, options);
     for (size_t i = 0; i < scene.jobs.size(); ++i) {
-      // With --resume, jobs whose image is complete (no state file beside it) are done.
-      const auto path = output_path(scene, i, options.outputs);
-      if (cl.resume && !std::filesystem::exists(checkpoint_path(path)) && std::filesystem::exists(path)) continue;
-      statistics.push_back(render_job_locally(scene, i, options, run, parse_seconds));
+      if (auto stats = render_job_locally(scene, i, options, fingerprints, run, parse_seconds)) statistics.push_back(*stats);
       if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
     }
   } catch (const Interrupted&) {

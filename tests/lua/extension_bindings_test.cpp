@@ -80,13 +80,13 @@ TEST_F(LuaExtensions, WrongArgumentsNameTheCallAndLine) {
   EXPECT_EQ(error_of("\nm = gr.reflectivematerial({1,1}, {1,1,1}, 10, 0.5)\n"),
             at(2) + "gr.reflectivematerial: argument 1 (kd) must be a table of 3 numbers, got a table of 2 values");
   EXPECT_EQ(error_of("m = gr.reflectivematerial({1,1,1}, {1,1,1}, 10, 1.5)\n"),
-            at(1) + "gr.reflectivematerial: argument 4 (reflectivity) must be a number from 0 to 1, got a number");
+            at(1) + "gr.reflectivematerial: argument 4 (reflectivity) must be a number from 0 to 1, got the number 1.5");
   EXPECT_EQ(error_of("\n\nm = gr.refractedmaterial({0,0,0}, {1,1,1}, 10, 1.0, 0)\n"),
-            at(3) + "gr.refractedmaterial: argument 5 (eta_t) must be a positive index of refraction, got a number");
+            at(3) + "gr.refractedmaterial: argument 5 (eta_t) must be a positive index of refraction, got the number 0");
   EXPECT_EQ(error_of("m = gr.fresneldiectricmaterial({0,0,0}, {1,1,1}, 10, 'glass', 1.5)\n"),
             at(1) + "gr.fresneldiectricmaterial: argument 4 (eta_i) must be a number, got the string 'glass'");
   EXPECT_EQ(error_of("m = gr.glossyreflectivematerial({0,0,0}, {1,1,1}, 10, 0.5, 2.5)\n"),
-            at(1) + "gr.glossyreflectivematerial: argument 5 (samples) must be a whole number from 1 to 4096, got a number");
+            at(1) + "gr.glossyreflectivematerial: argument 5 (samples) must be a whole number from 1 to 4096, got the number 2.5");
   EXPECT_EQ(error_of("l = gr.arealight({0,5,0}, {1,1,1}, {1,0,0}, {1,5,0}, {2,5,0})\n"),
             at(1) + "gr.arealight: the three corners lie on one line, so the light has no area");
   EXPECT_EQ(error_of("l = gr.arealight({0,5,0}, {1,1,1}, {1,0,0}, {1,5,0})\n"),

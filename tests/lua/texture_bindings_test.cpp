@@ -158,9 +158,9 @@ TEST_F(LuaTextureErrors, BadScale) {
   EXPECT_EQ(error_of("t = gr.checkerboardtexture({1, 1, 1}, {0, 0, 0})\n"),
             at(1) + "gr.checkerboardtexture: argument 3 (scale) must be a number, got nothing");
   EXPECT_EQ(error_of("\n\nt = gr.perlinnoisewoodgraintexture({1, 1, 1}, {0, 0, 0}, 0)\n"),
-            at(3) + "gr.perlinnoisewoodgraintexture: argument 3 (scale) must be a positive number, got a number");
+            at(3) + "gr.perlinnoisewoodgraintexture: argument 3 (scale) must be a positive number, got the number 0");
   EXPECT_EQ(error_of("t = gr.perlinnoisecosineinterptexture({1, 1, 1}, {0, 0, 0}, -2)\n"),
-            at(1) + "gr.perlinnoisecosineinterptexture: argument 3 (scale) must be a positive number, got a number");
+            at(1) + "gr.perlinnoisecosineinterptexture: argument 3 (scale) must be a positive number, got the number -2");
   EXPECT_EQ(error_of("t = gr.perlinnoisemarbletexture({1, 1, 1}, {0, 0, 0}, {})\n"),
             at(1) + "gr.perlinnoisemarbletexture: argument 3 (scale) must be a number, got an empty table");
 }
@@ -169,7 +169,7 @@ TEST_F(LuaTextureErrors, WavyNeedsItsNoiseMultiplier) {
   EXPECT_EQ(error_of("t = gr.perlinnoisewavytexture({1, 1, 1}, {0, 0, 0}, 2)\n"),
             at(1) + "gr.perlinnoisewavytexture: argument 4 (noise_multiplier) must be a number, got nothing");
   EXPECT_EQ(error_of("t = gr.perlinnoisewavytexture({1, 1, 1}, {0, 0, 0}, 2, 1/0)\n"),
-            at(1) + "gr.perlinnoisewavytexture: argument 4 (noise_multiplier) must be a finite number, got a number");
+            at(1) + "gr.perlinnoisewavytexture: argument 4 (noise_multiplier) must be a finite number, got the number inf");
 }
 
 TEST_F(LuaTextureErrors, FileTextureNameMissingOrNotAString) {

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> shipped_scenes() {
   std::vector<fs::path> scenes;
-  for (const auto& folder : {source_dir() / "scenes", source_dir() / "scenes/features"})
+  for (const auto& folder : {source_dir() / "scenes", source_dir() / "scenes/features", source_dir() / "docs/images"})
     for (const auto& entry : fs::directory_iterator(folder))
       if (entry.path().extension() == ".lua") scenes.push_back(entry.path());
   std::sort(scenes.begin(), scenes.end());
@@ -28,7 +28,7 @@ std::vector<fs::path> shipped_scenes() {
 std::string header_options(const fs::path& scene) {
   std::ifstream in(scene);
   std::string line;
-  const std::regex render(R"(Render: +(?:build/mjray|\./render\.sh)((?: +-[-a-z]+(?: +[0-9a-z.]+)?)*))");
+  const std::regex render(R"(Render: +(?:build/mjray|\./render\.sh)((?: +-[-a-z]+(?: +[a-z0-9.]+(?=\s|$))?)*))");
   for (int i = 0; i < 10 && std::getline(in, line); ++i) {
     std::smatch m;
     if (std::regex_search(line, m, render)) return m[1];

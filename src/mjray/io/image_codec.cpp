@@ -3,6 +3,8 @@
 #include <cctype>
 #include <system_error>
 
+#include <unistd.h>
+
 #include "mjray/core/error.h"
 #include "mjray/io/atomic_file.h"
 #include "mjray/io/png_codec.h"
@@ -54,12 +56,18 @@ const ImageCodec& codec_for(const fs::path& path) {
                        writable_extensions() + ")");
 }
 
-void check_image_output(const fs::path& path, const EncodeOptions& options) {
+void check_image_output_format(const fs::path& path, const EncodeOptions& options) {
   const ImageCodec& codec = codec_for(path);
   if (const std::string reason = codec.unsupported(options); !reason.empty()) fail_write(path, reason);
+}
+
+void check_image_output(const fs::path& path, const EncodeOptions& options) {
+  check_image_output_format(path, options);
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) fail_write(path, "folder '" + folder.string() + "' does not exist");
+  if (fs::is_directory(path, ec)) fail_write(path, "it is a folder");
+  if (::access(folder.c_str(), W_OK) != 0) fail_write(path, "folder '" + folder.string() + "' is not writable");
 }
 
 void write_image(const Image& image, const fs::path& path, const EncodeOptions& options) {

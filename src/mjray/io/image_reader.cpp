@@ -44,4 +44,14 @@ Image read_image(const fs::path& path) {
   fail_read(path, "not a PNG, JPEG or binary (P6) PPM file");
 }
 
+ImageMetadata read_image_metadata(const fs::path& path) {
+  std::unique_ptr<FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) fail_read(path, std::generic_category().message(errno));
+  unsigned char magic[8] = {};
+  const size_t got = std::fread(magic, 1, sizeof magic, file.get());
+  if (got == sizeof magic && png_sig_cmp(magic, 0, sizeof magic) == 0) return decode_png_text(path, file.get());
+  if (got >= 2 && magic[0] == 'P' && magic[1] == '6') return decode_ppm_comments(file.get());
+  return {};
+}
+
 }  // namespace mjray

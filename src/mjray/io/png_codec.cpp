@@ -201,4 +201,30 @@ Image decode_png(const fs::path& path, FILE* file, size_t max_pixels) {
   return image_from_rgb8(rgb.data(), int(width), int(height));
 }
 
+namespace {
+
+bool read_text(PngReader& r, ImageMetadata& text) {
+  if (setjmp(png_jmpbuf(r.png))) return false;
+  png_set_read_fn(r.png, &r.io, on_read);
+  png_set_sig_bytes(r.png, 8);
+  png_read_info(r.png, r.info);
+  png_textp chunks = nullptr;
+  const int count = png_get_text(r.png, r.info, &chunks, nullptr);
+  for (int i = 0; i < count; ++i) text.emplace_back(chunks[i].key, std::string(chunks[i].text, chunks[i].text_length));
+  return true;
+}
+
+}  // namespace
+
+ImageMetadata decode_png_text(const fs::path& path, FILE* file) {
+  PngReader r;
+  r.io.file = file;
+  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.io, on_error, on_warning);
+  if (r.png != nullptr) r.info = png_create_info_struct(r.png);
+  if (r.png == nullptr || r.info == nullptr) fail_read(path, "out of memory");
+  ImageMetadata text;
+  if (!read_text(r, text)) fail_read(path, failure(r.io));
+  return text;
+}
+
 }  // namespace mjray

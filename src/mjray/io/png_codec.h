@@ -18,4 +18,8 @@ std::string encode_png(const Image& image, const EncodeOptions& options);
 /// reduced to 8, alpha dropped; values v/255. Throws OutputError naming `path`.
 Image decode_png(const std::filesystem::path& path, FILE* file, size_t max_pixels);
 
+/// The text chunks before the pixels of the PNG open in `file` (after its signature), as
+/// encode_png writes options.metadata. Throws OutputError naming `path`.
+ImageMetadata decode_png_text(const std::filesystem::path& path, FILE* file);
+
 }  // namespace mjray

@@ -42,13 +42,18 @@ std::map<std::string, std::string> lines_of(const std::string& text) {
 
 }  // namespace
 
-std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& o) {
-  const RenderJob& job = scene.jobs[index];
-  std::string text;
+JobFingerprints::JobFingerprints(const SceneDescription& scene, const JobOptions& options)
+    : scene_(scene), options_(options) {
+  inputs_ = "scene " + scene.script.filename().string() + "=" + file_hash(scene.script) + "\n";
+  for (const auto& input : scene.inputs) inputs_ += "file " + input.string() + "=" + file_hash(input) + "\n";
+}
+
+std::string JobFingerprints::of(size_t index) const {
+  const RenderJob& job = scene_.jobs[index];
+  const JobOptions& o = options_;
+  std::string text = inputs_;
   const auto line = [&](const std::string& name, const std::string& value) { text += name + "=" + value + "\n"; };
-  line("scene " + scene.script.filename().string(), file_hash(scene.script));
-  for (const auto& input : scene.inputs) line("file " + input.string(), file_hash(input));
-  line("gr.render call", std::to_string(index + 1) + " of " + std::to_string(scene.jobs.size()));
+  line("gr.render call", std::to_string(index + 1) + " of " + std::to_string(scene_.jobs.size()));
   line("size", std::to_string(job.width) + "x" + std::to_string(job.height));
   line("transform order", job.post_multiplied ? "post" : "pre");
   line("-r", std::to_string(o.integrator.max_reflection_depth));
@@ -59,7 +64,12 @@ std::string job_fingerprint(const SceneDescription& scene, size_t index, const J
   line("anti-aliasing passes", std::to_string(o.render.antialias_max_passes));
   line("--seed", std::to_string(o.render.seed));
   line("tile size", std::to_string(o.render.tile_size));
+  line("--gamma", o.outputs.encoding.gamma == OutputGamma::kSrgb ? "srgb" : "linear");  // decodes textures too
   return text;
+}
+
+std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& options) {
+  return JobFingerprints(scene, options).of(index);
 }
 
 std::string fingerprint_difference(const std::string& saved, const std::string& current) {

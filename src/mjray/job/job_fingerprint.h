@@ -14,6 +14,20 @@ namespace mjray {
 /// which never do). Reads the files, so call it only when a state is saved or resumed.
 std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& options);
 
+/// The fingerprints of every job of one scene, reading each file once.
+class JobFingerprints {
+ public:
+  /// Hashes the script and every file it read; both arguments must outlive this object.
+  JobFingerprints(const SceneDescription& scene, const JobOptions& options);
+  /// job_fingerprint(scene, index, options).
+  std::string of(size_t index) const;
+
+ private:
+  const SceneDescription& scene_;
+  const JobOptions& options_;
+  std::string inputs_;  // the "scene" and "file" lines
+};
+
 /// The lines of `saved` and `current` that differ, for a refused resume ("-s: 2 then, 4 now").
 std::string fingerprint_difference(const std::string& saved, const std::string& current);
 

@@ -15,6 +15,9 @@ namespace mjray {
 struct OutputOptions {
   std::optional<std::filesystem::path> output;  ///< --output: the file of the scene's only image
   std::optional<std::filesystem::path> outdir;  ///< --outdir: the folder of every image
+  /// Images the script names must resolve (links and ".." resolved) inside the script's
+  /// folder tree or the working directory's; off with --unsafe-lua.
+  bool confine_script_outputs = true;
   EncodeOptions encoding;
 };
 

@@ -17,6 +17,7 @@ extern "C" {
 #include <lualib.h>
 }
 
+#include "mjray/io/obj_loader.h"
 #include "mjray/lua/lua_context.h"
 
 namespace mjray {
@@ -56,6 +57,19 @@ FileLocation caller_location(lua_State* L) {
 
 void record_input(lua_State* L, const std::filesystem::path& path) {
   context(L).description->inputs.push_back(path);
+}
+
+void add_warning(lua_State* L, const std::string& text) {
+  LoaderContext& ctx = context(L);
+  const std::string warning = caller_location(L).to_string() + ": " + text;
+  if (ctx.warned.insert(warning).second) ctx.description->warnings.push_back(warning);
+}
+
+std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path) {
+  ObjSummary summary;
+  auto mesh = std::make_shared<const TriangleMesh>(load_obj(path, &summary));
+  if (const std::string warning = check_obj_content(*mesh, summary, path.string()); !warning.empty()) add_warning(L, warning);
+  return mesh;
 }
 
 std::string not_found_message(const std::string& name) {
@@ -248,6 +262,7 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   if (!options.unsafe_lua) lua::install_sandbox(L);
   lua::register_gr(L);
   lua::register_extensions(L);
+  lua::guard_gr_names(L);
 
   std::error_code ec;
   if (!std::filesystem::exists(script, ec))

@@ -25,6 +25,8 @@ inline constexpr size_t kDefaultLuaMemoryBytes = size_t(4) << 30;
 struct SceneLoadOptions {
   bool unsafe_lua = false;  ///< give the script the full standard library
   TransformOrder transform_order = TransformOrder::kAuto;
+  /// Decode 8-bit image textures from sRGB to linear (with --gamma srgb); else use v/255.
+  bool srgb_textures = false;
   /// Most bytes the Lua state may hold; past it the allocation fails with a SceneError
   /// naming the line. 0 = no cap.
   size_t lua_memory_bytes = kDefaultLuaMemoryBytes;

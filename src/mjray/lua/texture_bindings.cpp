@@ -13,6 +13,7 @@ extern "C" {
 
 #include "mjray/io/image_reader.h"
 #include "mjray/io/path_resolver.h"
+#include "mjray/io/quantise.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
 #include "mjray/texture/texture.h"
@@ -64,6 +65,7 @@ int gr_filetexture(lua_State* L) {
   ImageTexture texture;
   try {
     texture.image = read_image(*path);
+    if (context(L).options.srgb_textures) decode_srgb_8bit(texture.image);
   } catch (const OutputError& e) {
     throw ArgumentError(std::string(fn) + ": " + e.what());
   }

@@ -58,6 +58,7 @@ struct SceneDescription {
   std::filesystem::path script;
   std::vector<RenderJob> jobs;
   std::vector<std::string> warnings;  ///< "file:line: text", shown to the user
+  std::vector<std::string> notes;     ///< "file:line: text": choices made for the user (e.g. the transform order)
   /// Every file the script read (meshes, textures, modules, files it opened), as resolved;
   /// outputs must not overwrite them.
   std::vector<std::filesystem::path> inputs;
