@@ -43,28 +43,50 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
       result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), counters);
       continue;
     }
+    // When nothing can stand between this point and the light, no sample needs a ray.
+    const bool clear = light_region_clear(si, light);
     Color sum;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const float jitter_s = random.uniform();
         const float jitter_t = random.uniform();
         const Point2 u{(float(i) + jitter_s) / float(n), (float(j) + jitter_t) / float(n)};
-        sum += light_sample(si, frame, local, sample_li(light, si.point, u), counters);
+        sum += light_sample(si, frame, local, sample_li(light, si.point, u), counters, clear);
       }
     result += sum / float(n * n);
   }
   return result;
 }
 
+bool WhittedIntegrator::light_region_clear(const SurfaceInteraction& si, const Light& light) const {
+  // The rays of every sample must leave from one origin: the light wholly on one side of the
+  // surface, by a clear angle. On the outer side (where the geometric normal points) the
+  // surface itself cannot stand in the way, for a triangle or a convex shape; on the inner
+  // side it is tested like everything else.
+  const std::array<Point3, 4> region = sample_region(light);
+  int in_front = 0;
+  for (const Point3& corner : region) {
+    const Vector3 to = corner - si.point;
+    const float cosine = dot(si.geometric_normal, to) / length(to);
+    if (!(std::abs(cosine) > 1e-3f)) return false;
+    in_front += cosine > 0;
+  }
+  if (in_front != 0 && in_front != 4) return false;
+  const auto pyramid = LightPyramid::make(offset_origin(si, region[0] - si.point), region);
+  constexpr uint32_t kNone = ~uint32_t(0);
+  return pyramid && accel_.region_clear(*pyramid, in_front == 4 ? si.prim : kNone);
+}
+
 Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const ShadingFrame& frame,
                                       const LocalShading& local, const LightSample& sample,
-                                      RayCounters& counters) const {
+                                      RayCounters& counters, bool unoccluded) const {
   const Vector3 to_light = sample.position - si.point;
   const float distance = length(to_light);
   if (!(distance > 0)) return {};
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
+  if (unoccluded) return local.phong(frame, l, n_dot_l) * sample.intensity;
   ++counters.shadow;
   const Ray shadow = spawn_ray_to(si, sample.position);
   if (!world_.primitives.any_transmissive()) {

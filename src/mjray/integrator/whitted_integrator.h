@@ -46,9 +46,12 @@ class WhittedIntegrator final : public Integrator {
   Color direct_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                      RandomStream& random, RayCounters& counters) const;
   /// The Phong reflection of one light sample, or black when it is behind the surface or
-  /// in shadow.
+  /// in shadow (not looked for when `unoccluded` is known).
   Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                     const LightSample& sample, RayCounters& counters) const;
+                     const LightSample& sample, RayCounters& counters, bool unoccluded = false) const;
+  /// Whether every shadow ray from si to the light's sample region surely reaches it (a proof
+  /// by the accelerator; false when it cannot tell). The image is the same either way.
+  bool light_region_clear(const SurfaceInteraction& si, const Light& light) const;
   /// Light arriving along the material's specular lobes, within the depth limits.
   Color specular_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobes& lobes,
                        Depth depth, RandomStream& random, RayCounters& counters) const;

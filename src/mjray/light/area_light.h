@@ -1,6 +1,8 @@
 #pragma once
 /// gr.arealight: a parallelogram light, sampled with jittered shadow rays for soft shadows.
 
+#include <array>
+
 #include "mjray/core/sampling.h"
 #include "mjray/light/light_sample.h"
 
@@ -31,6 +33,8 @@ struct AreaLight {
   EmittedRay sample_le(Point2 u_position, Point2 u_direction) const {
     return {{point_at(u_position.u, u_position.v), sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
   }
+  /// The parallelogram its samples lie in, corners in order around it.
+  std::array<Point3, 4> sample_region() const { return {corner, corner + edge1, corner + edge1 + edge2, corner + edge2}; }
   /// Total flux, 4π · colour (before falloff).
   Color power() const { return isotropic_power(colour); }
 };

@@ -1,6 +1,8 @@
 #pragma once
 /// gr.light: a point light with quadratic falloff.
 
+#include <array>
+
 #include "mjray/core/sampling.h"
 #include "mjray/light/light_sample.h"
 
@@ -26,6 +28,8 @@ struct PointLight {
   EmittedRay sample_le(Point2 /*u_position*/, Point2 u_direction) const {
     return {{position, sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
   }
+  /// Where its samples lie: the position (four times, for the parallelogram shape of lights).
+  std::array<Point3, 4> sample_region() const { return {position, position, position, position}; }
   /// Total flux, 4π · colour (before falloff).
   Color power() const { return isotropic_power(colour); }
 };

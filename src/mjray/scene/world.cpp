@@ -59,6 +59,7 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
     }
     si.object_point = mesh.world_from_object.inverse()(si.point);
     si.material = mesh.material;
+    si.prim = hit.prim;
     return si;
   }
   // Compute shape data in object space and map it back to the world.
@@ -74,6 +75,7 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
   si.geometric_normal = normalize(s.world_from_object(surface.normal));
   si.shading_normal = si.geometric_normal;
   si.material = s.material;
+  si.prim = hit.prim;
   return si;
 }
 
