@@ -55,7 +55,7 @@ Color shadow_ray_transmittance(const World& world, const Accelerator& accel, con
   Color kept{1, 1, 1};
   const Vector3 wo = normalize(-ray.direction);
   for (const Hit& hit : hits.in_order()) {
-    const SurfaceInteraction si = world.interaction(ray, hit);
+    const SurfaceInteraction si = world.crossing(ray, hit);
     const ShadingFrame frame{wo, face_forward(si.shading_normal, wo), si.geometric_normal};
     kept = kept * shadow_transmittance(world.materials[si.material], frame);
     if (kept.is_black()) break;

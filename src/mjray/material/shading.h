@@ -46,6 +46,8 @@ struct LocalShading {
   Color phong(const ShadingFrame& f, const Vector3& l, float n_dot_l) const {
     const Vector3 r = Vector3(f.n) * (2 * n_dot_l) - l;
     const float r_dot_v = std::max(0.f, dot(r, f.wo));
+    // ks·0 adds exactly nothing: skip the power where it cannot count.
+    if (ks.is_black() || (r_dot_v == 0 && shininess > 0)) return kd * n_dot_l + Color{};
     return kd * n_dot_l + ks * std::pow(r_dot_v, shininess);
   }
 
