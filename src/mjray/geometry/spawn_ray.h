@@ -5,7 +5,9 @@
 /// float step away, so that neither the rounding of the hit point nor of the move can leave it
 /// on the wrong side).
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "mjray/core/ray.h"
@@ -17,6 +19,14 @@ namespace mjray {
 constexpr float gamma_bound(int n) {
   constexpr float u = std::numeric_limits<float>::epsilon() * 0.5f;
   return (float(n) * u) / (1 - float(n) * u);
+}
+
+/// The next float above (up) or below a finite v, without a library call.
+inline float next_float(float v, bool up) {
+  if (v == 0) return up ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
+  uint32_t bits = std::bit_cast<uint32_t>(v);
+  bits += (v > 0) == up ? 1 : -1;
+  return std::bit_cast<float>(bits);
 }
 
 /// How far along the geometric normal the hit point's error box reaches.
@@ -33,8 +43,8 @@ inline Point3 offset_origin(const SurfaceInteraction& si, const Vector3& directi
   Point3 origin = si.point + offset;
   // Round away from the surface: the addition itself may have rounded toward it.
   for (int axis = 0; axis < 3; ++axis) {
-    if (offset[axis] > 0) origin[axis] = std::nextafter(origin[axis], kInfinity);
-    else if (offset[axis] < 0) origin[axis] = std::nextafter(origin[axis], -kInfinity);
+    if (offset[axis] > 0) origin[axis] = next_float(origin[axis], true);
+    else if (offset[axis] < 0) origin[axis] = next_float(origin[axis], false);
   }
   return origin;
 }

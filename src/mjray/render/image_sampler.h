@@ -40,10 +40,10 @@ class ImageSampler {
   const SamplingSettings& settings() const { return settings_; }
 
   /// The first pass over `rect`: one sample through each pixel centre, added to `film`.
-  void first_pass(const PixelRect& rect, Film& film, RayCounters& counters) const;
+  void first_pass(const PixelRect& rect, Film& film, TraceState& state) const;
   /// The adaptive anti-aliasing estimate of pixel (x, y): N×N jittered samples, which replace
   /// the pixel's first-pass estimate (the original's rule).
-  FilmPixel supersample(int x, int y, RayCounters& counters) const;
+  FilmPixel supersample(int x, int y, TraceState& state) const;
 
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(width_) + uint64_t(x); }

@@ -53,7 +53,7 @@ class TileRender {
   const ImageSampler& sampler_;
   TileLayout layout_;
   int thread_count_;
-  std::vector<RayCounters> counters_;                        // one per thread
+  std::vector<TraceState> states_;                           // one per thread
   std::unique_ptr<std::atomic<uint64_t>[]> published_rays_;  // per thread, for live rays/s
 };
 
