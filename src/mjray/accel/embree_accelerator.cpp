@@ -82,6 +82,7 @@ struct FilterContext {
   RTCIntersectContext embree;
   const PrimitiveSet* prims;
   HitFilter* filter;
+  Interval t_range;  ///< the query's: in a filter call Embree has set the ray's tfar to the hit's t
 };
 
 /// Whether the hit of a filtered query on transmissive `prim` blocks: the filter sees the hit
@@ -115,9 +116,7 @@ void triangle_occlusion_filter(const RTCFilterFunctionNArguments* args) {
     if (args->valid[i] != -1 || RTCHitN_geomID(args->hit, args->N, i) != kTriangleGeometry) continue;
     const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
     if (!context.prims->filtered(prim, context.filter->sees_opaque)) continue;
-    const Interval range{RTCRayN_tnear(args->ray, args->N, i) <= kTNear ? 0 : RTCRayN_tnear(args->ray, args->N, i),
-                         RTCRayN_tfar(args->ray, args->N, i)};
-    if (!filtered_blocks(context, prim, ray_of(args->ray, args->N, i), range)) args->valid[i] = 0;
+    if (!filtered_blocks(context, prim, ray_of(args->ray, args->N, i), context.t_range)) args->valid[i] = 0;
   }
 }
 
@@ -243,7 +242,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
 
 bool EmbreeAccelerator::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
   if (!valid_query(ray, t_range.max)) return false;
-  FilterContext context{{}, &prims_, &filter};
+  FilterContext context{{}, &prims_, &filter, t_range};
   rtcInitIntersectContext(&context.embree);
   context.embree.filter = prims_.any_transmissive() || filter.sees_opaque ? triangle_occlusion_filter : nullptr;
   RTCRay r = embree_ray(ray, t_range);
