@@ -19,6 +19,7 @@
 #endif
 
 #include "mjray/accel/bvh_builder.h"
+#include "mjray/core/float_steps.h"
 #include "mjray/geometry/triangle.h"
 
 namespace mjray {

@@ -124,16 +124,20 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
     } else {
       for (uint32_t i = current.child, end = current.child + current.count; i < end; ++i) {
         const LeafPrimitive& leaf = bvh.leaves[i];
+        // Once something is hit, a primitive at exactly the same t may still win: the lower
+        // primitive id does, as with every accelerator.
+        const float reach = found ? next_float(t_max, true) : t_max;
         Hit h;
         if (leaf.prim < bvh.triangle_count) {
-          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
+          const auto tri = intersect_triangle(tri_ray, {t_min, reach}, leaf.p0, leaf.p1, leaf.p2);
           if (!tri) continue;
           h = {tri->t, leaf.prim, tri->b1, tri->b2};
         } else {
-          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
+          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, reach});
           if (!shape) continue;
           h = *shape;
         }
+        if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
         if constexpr (kQuery == BvhQuery::kAny) return true;
         if constexpr (kQuery == BvhQuery::kFiltered) {
           if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks(h)) return true;

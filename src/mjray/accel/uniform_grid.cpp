@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "mjray/core/float_steps.h"
 #include "mjray/geometry/triangle.h"
 
 namespace mjray {
@@ -230,13 +231,20 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range, HitFi
   const auto blocks = [&](const Hit& hit) {
     return !filter || !primitives_.filtered(hit.prim, filter->sees_opaque) || filter->blocks(hit);
   };
+  // A closest hit at exactly the nearest t so far wins only with a lower primitive id, as
+  // with every accelerator; so the range reaches one float past that t once one is found.
+  const auto reach = [&] { return nearest ? next_float(t_max, true) : t_max; };
+  const auto nearer = [&](const Hit& hit) {
+    return !nearest || hit.t < t_max || (hit.t == t_max && hit.prim < nearest->prim);
+  };
   // Test the primitives that live outside the voxels.
   for (const uint32_t prim : unbounded_) {
-    if (auto hit = primitives_.intersect(prim, ray, {t_min, t_max})) {
+    if (auto hit = primitives_.intersect(prim, ray, {t_min, reach()})) {
       if constexpr (kAnyHit) {
         if (blocks(*hit)) return hit;
         continue;
       }
+      if (!nearer(*hit)) continue;
       t_max = hit->t;
       nearest = hit;
     }
@@ -304,16 +312,17 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range, HitFi
         std::optional<Hit> hit;
         if (prim < triangle_count_) {
           const auto& c = corners_[prim];
-          if (const auto h = intersect_triangle(watertight, {t_min, t_max}, c[0], c[1], c[2]))
+          if (const auto h = intersect_triangle(watertight, {t_min, reach()}, c[0], c[1], c[2]))
             hit = Hit{h->t, prim, h->b1, h->b2};
         } else {
-          hit = primitives_.intersect_shape(prim, ray, {t_min, t_max});
+          hit = primitives_.intersect_shape(prim, ray, {t_min, reach()});
         }
         if (hit) {
           if constexpr (kAnyHit) {
             if (blocks(*hit)) return hit;
             continue;
           }
+          if (!nearer(*hit)) continue;
           t_max = hit->t;
           t_stop = std::min(t_stop, t_max);
           nearest = hit;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "mjray/core/float_steps.h"
 #include "mjray/core/ray.h"
 #include "mjray/geometry/surface_interaction.h"
 
@@ -19,14 +20,6 @@ namespace mjray {
 constexpr float gamma_bound(int n) {
   constexpr float u = std::numeric_limits<float>::epsilon() * 0.5f;
   return (float(n) * u) / (1 - float(n) * u);
-}
-
-/// The next float above (up) or below a finite v, without a library call.
-inline float next_float(float v, bool up) {
-  if (v == 0) return up ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
-  uint32_t bits = std::bit_cast<uint32_t>(v);
-  bits += (v > 0) == up ? 1 : -1;
-  return std::bit_cast<float>(bits);
 }
 
 /// How far along the geometric normal the hit point's error box reaches.
