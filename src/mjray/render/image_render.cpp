@@ -68,6 +68,7 @@ bool ImageRender::run_first_pass() {
 }
 
 bool ImageRender::plan_pass() {
+  std::lock_guard lock(film_mutex_);  // checkpoint() may read the plan from another thread
   const std::vector<int> pixels = next_supersample_set(film_.resolve(), settings_.antialias_threshold, supersampled_);
   if (pixels.empty()) return false;
   pass_pixels_.assign(pixels.begin(), pixels.end());
@@ -78,7 +79,7 @@ bool ImageRender::plan_pass() {
 bool ImageRender::run_antialiasing() {
   if (settings_.antialias_samples <= 0) return true;
   const uint64_t samples_per_pixel = uint64_t(settings_.antialias_samples) * uint64_t(settings_.antialias_samples);
-  for (; antialias_pass_ <= settings_.antialias_max_passes; ++antialias_pass_) {
+  while (antialias_pass_ <= settings_.antialias_max_passes) {
     if (stop_.stop_requested()) return false;
     // Plan the pass from the image the last pass left (a resumed pass keeps its plan).
     if (pass_pixels_.empty() && !plan_pass()) break;
@@ -105,10 +106,12 @@ bool ImageRender::run_antialiasing() {
       done_ += chunk.pixels.size() * samples_per_pixel;
     });
     if (!finished) return false;
+    // The plan and the pass number change together, so a checkpoint never sees one without the other.
     std::lock_guard lock(film_mutex_);
     pass_pixels_.clear();
     pass_done_.clear();
     ++antialias_passes_run_;
+    ++antialias_pass_;
   }
   antialias_pass_ = settings_.antialias_max_passes + 1;
   return true;
