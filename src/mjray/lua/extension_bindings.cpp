@@ -11,6 +11,7 @@ extern "C" {
 
 #include "mjray/io/obj_loader.h"
 #include "mjray/io/path_resolver.h"
+#include "mjray/lua/extended_mesh_tables.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
 
@@ -110,13 +111,20 @@ int read_extended_obj(lua_State* L) {
 
 /// gr.extendedmesh(name, use_uvs, read_extended_obj('file.obj')): a mesh whose vertex
 /// normals are interpolated (Phong shading) and whose UVs are kept when use_uvs is true.
+/// The mesh data is the built-in reader's, or the tables a scene's own reader returns.
 int gr_extendedmesh(lua_State* L) {
   const char* fn = "gr.extendedmesh";
   const std::string name = arg_string(L, 1, fn, "name");
   const bool use_uvs = lua_toboolean(L, 2);
-  auto* data = test_shared<const TriangleMesh>(L, 3, kObjDataType);
-  if (!data) bad_argument(L, fn, 3, "mesh data", "the result of read_extended_obj('file.obj')");
-  std::shared_ptr<const TriangleMesh> mesh = *data;
+  std::shared_ptr<const TriangleMesh> mesh;
+  if (auto* data = test_shared<const TriangleMesh>(L, 3, kObjDataType)) {
+    mesh = *data;
+  } else if (lua_type(L, 3) == LUA_TTABLE) {
+    mesh = read_extended_mesh_tables(L, 3, fn);
+  } else {
+    bad_argument(L, fn, 3, "mesh data",
+                 "the result of read_extended_obj('file.obj'), or a table of positions, normals, uvs and faces");
+  }
   if (!use_uvs && !mesh->uvs.empty()) {
     auto copy = std::make_shared<TriangleMesh>(*mesh);
     copy->uvs.clear();
