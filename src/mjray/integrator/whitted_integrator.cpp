@@ -128,7 +128,7 @@ Color WhittedIntegrator::specular_light(const SurfaceInteraction& si, const Shad
       continue;
     }
     // A glossy lobe blurs only the first reflection (as the original): deeper ones are mirrors.
-    if (lobe.samples > 1 && depth.reflection == 0)
+    if (lobe.cos_cone < 1 && depth.reflection == 0)
       result += glossy_light(si, frame, lobe, next, random, state);
     else
       result += lobe.weight * trace_secondary(si, lobe.direction, next, random, state);

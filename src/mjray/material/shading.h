@@ -76,9 +76,9 @@ struct LocalShading {
 enum class LobeKind { kReflection, kTransmission };
 
 /// One direction light arrives from by specular reflection or refraction, with its weight in
-/// the surface's colour. A glossy lobe (samples > 1) spreads `samples` rays uniformly over the
-/// cone of half-angle acos(cos_cone) around `direction`; otherwise the lobe is one ray along
-/// `direction` (a mirror or a lens).
+/// the surface's colour. A glossy lobe (cos_cone < 1) spreads `samples` rays uniformly over the
+/// cone of half-angle acos(cos_cone) around `direction` (one sample is one such ray); otherwise
+/// the lobe is one ray along `direction` (a mirror or a lens).
 struct SpecularLobe {
   Vector3 direction;
   float weight = 0;
