@@ -21,14 +21,15 @@ uint64_t peak_rss_bytes() {
 }
 
 std::string summary_text(const JobStatistics& s) {
+  const std::string grid = s.grid_resolution ? " " + std::to_string(s.grid_resolution) + "³" : "";
   char text[1024];
   std::snprintf(text, sizeof text,
                 "mjray: wrote %s\n"
-                "  time      %.3fs total: parse %.3fs, build %.3fs (%s, %u primitives), render %.3fs on %d threads\n"
+                "  time      %.3fs total: parse %.3fs, build %.3fs (%s%s, %u primitives), render %.3fs on %d threads\n"
                 "  rays      %llu primary, %llu secondary, %llu shadow: %.2f M rays/s\n"
                 "  pixels    %llu supersampled in %d anti-aliasing passes\n"
                 "  memory    %.1f MiB peak\n",
-                s.image.c_str(), s.seconds_total(), s.seconds_parse, s.seconds_build, s.accel.c_str(), s.primitives,
+                s.image.c_str(), s.seconds_total(), s.seconds_parse, s.seconds_build, s.accel.c_str(), grid.c_str(), s.primitives,
                 s.seconds_render, s.render.threads, (unsigned long long)s.render.rays.primary,
                 (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                 s.rays_per_second() / 1e6, (unsigned long long)s.render.pixels_supersampled,
@@ -62,12 +63,12 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
                   "\"seconds_total\": %.6f, \"seconds_parse\": %.6f, \"seconds_build\": %.6f, "
                   "\"seconds_render\": %.6f, \"primitives\": %u, \"threads\": %d, \"rays_primary\": %llu, "
                   "\"rays_secondary\": %llu, \"rays_shadow\": %llu, \"rays_per_second\": %.1f, "
-                  "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu",
+                  "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu, \"grid_resolution\": %d",
                   s.seconds_total(), s.seconds_parse, s.seconds_build, s.seconds_render, s.primitives,
                   s.render.threads, (unsigned long long)s.render.rays.primary,
                   (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                   s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
-                  (unsigned long long)s.peak_rss_bytes);
+                  (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
     out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers + "}";
     out += i + 1 < jobs.size() ? ",\n" : "\n";
   }

@@ -18,6 +18,7 @@ struct JobStatistics {
   double seconds_render = 0;
   uint32_t primitives = 0;
   std::string accel;
+  int grid_resolution = 0;  ///< voxels per axis of --accel grid; 0 for other accelerators
   RenderStats render;
   uint64_t peak_rss_bytes = 0;
 

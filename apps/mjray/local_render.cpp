@@ -4,6 +4,7 @@
 #include <system_error>
 
 #include "render_watcher.h"
+#include "mjray/accel/uniform_grid.h"
 #include "mjray/core/error.h"
 #include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"
@@ -66,6 +67,7 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   stats.seconds_build = job.build_seconds();
   stats.primitives = job.world().primitive_count();
   stats.accel = std::string(job.accelerator().name());
+  if (const auto* grid = dynamic_cast<const UniformGrid*>(&job.accelerator())) stats.grid_resolution = grid->resolution();
 
   // Compute the image, resuming from a saved state when there is one.
   ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render);

@@ -230,7 +230,7 @@ TEST_F(GoldenCli, GetoptConventionsAttachedValuesAndGroupedFlags) {
   }
   // The grouped -o still asks for the grid: the statistics name it.
   const RunResult r = run({"-og", "5", "--quiet", "--stats", scene.string()});
-  EXPECT_NE(r.err.find("(grid, 1 primitives)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(grid 3³, 1 primitives)"), std::string::npos) << r.err;  // -o: 3·∛1 voxels
   const std::string hint = "(run 'mjray --help' for the options)\n";
   EXPECT_EQ(run({"-ox", scene.string()}).err, "mjray: unknown option '-x' in '-ox'\n" + hint);
   EXPECT_EQ(run({"-r"}).err, "mjray: -r needs a value\n" + hint);
@@ -256,6 +256,23 @@ TEST_F(GoldenCli, GridOptionsWithAnotherAcceleratorWarn) {
   EXPECT_EQ(r.err, "mjray: warning: -o has no effect with --accel none (it sizes the grid of --accel grid)\n");
   r = run({"--accel", "grid", "-g", "10", "--quiet", scene.string()});
   EXPECT_EQ(r.err, "");
+}
+
+TEST_F(GoldenCli, AGridSmallerThanAskedForWarnsAndStatisticsReportItsSize) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const std::string json = (dir_ / "stats.json").string();
+  RunResult r = run({"--accel", "grid", "-g", "1000", "--quiet", "--stats", "--stats-json", json, scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("mjray: warning: grid resolution 1000 is above the limit of 256 voxels per axis; the grid "
+                        "uses 256³ voxels\n", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("(grid 256³, 1 primitives)"), std::string::npos) << r.err;
+  EXPECT_NE(read_file(json).find("\"grid_resolution\": 256"), std::string::npos) << read_file(json);
+  r = run({"--accel", "grid", "-g", "7", "--quiet", "--stats", "--stats-json", json, scene.string()});
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(grid 7³, 1 primitives)"), std::string::npos) << r.err;
+  EXPECT_NE(read_file(json).find("\"grid_resolution\": 7"), std::string::npos);
+  r = run({"--accel", "bvh", "--quiet", "--stats-json", json, scene.string()});
+  EXPECT_NE(read_file(json).find("\"grid_resolution\": 0"), std::string::npos);
 }
 
 TEST_F(GoldenCli, HelpListsEveryAcceleratorOfThisBuild) {

@@ -211,7 +211,7 @@ TEST(GoldenRender, ProgressLinesAreMonotoneAndEndAt100AndStatsJsonHasEveryKey) {
   const std::string stats = read_file(json);
   for (const char* key : {"seconds_total", "seconds_parse", "seconds_build", "seconds_render", "primitives", "accel",
                           "threads", "rays_primary", "rays_secondary", "rays_shadow", "rays_per_second",
-                          "pixels_supersampled", "peak_rss_bytes"})
+                          "pixels_supersampled", "peak_rss_bytes", "grid_resolution"})
     EXPECT_NE(stats.find(std::string("\"") + key + "\": "), std::string::npos) << key << " missing from " << stats;
   EXPECT_EQ(stats.front(), '[');
   EXPECT_NE(stats.find("\"primitives\": 3000"), std::string::npos) << stats;

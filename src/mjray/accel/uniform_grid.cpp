@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "mjray/core/float_steps.h"
 #include "mjray/geometry/triangle.h"
@@ -75,6 +76,19 @@ bool is_finite(const Bounds3& b) { return is_finite(b.lo) && is_finite(b.hi); }
 
 }  // namespace
 
+std::string UniformGrid::resolution_note() const {
+  if (resolution_ >= requested_resolution_) return "";
+  const int capped = std::min(requested_resolution_, kMaxResolution);
+  std::string note = "grid resolution " + std::to_string(requested_resolution_);
+  if (requested_resolution_ > kMaxResolution) note += " is above the limit of " + std::to_string(kMaxResolution) + " voxels per axis";
+  if (resolution_ < capped) {
+    note += requested_resolution_ > kMaxResolution ? ", and " : " ";
+    note += std::to_string(2 * resolution_) + "³ voxels would list more than " + std::to_string(reference_budget_) +
+            " primitive references (the memory budget)";
+  }
+  return note + "; the grid uses " + std::to_string(resolution_) + "³ voxels";
+}
+
 int optimal_grid_resolution(size_t primitive_count) {
   return std::max(1, int(std::lround(3 * std::cbrt(double(primitive_count)))));
 }
@@ -101,6 +115,7 @@ UniformGrid::UniformGrid(const PrimitiveSet& prims, int resolution)
   }
   const size_t bounded = n - unbounded_.size();
   if (resolution == 0) resolution = optimal_grid_resolution(n);
+  requested_resolution_ = std::max(resolution, 1);
   resolution_ = std::clamp(resolution, 1, kMaxResolution);
   if (bounded == 0) {
     voxel_begin_.assign(2, 0);
@@ -128,6 +143,7 @@ UniformGrid::UniformGrid(const PrimitiveSet& prims, int resolution)
 
   const uint64_t budget = std::min<uint64_t>(std::max(kMinReferenceBudget, kReferencesPerPrimitive * bounded),
                                              std::numeric_limits<uint32_t>::max());  // offsets are 32-bit
+  reference_budget_ = budget;
   for (;;) {
     const int r = resolution_;
     for (int a = 0; a < 3; ++a) {

@@ -1,5 +1,6 @@
 #include "mjray/job/prepared_job.h"
 
+#include "mjray/accel/uniform_grid.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/scene/flatten.h"
@@ -13,6 +14,9 @@ PreparedJob::PreparedJob(const SceneDescription& scene, size_t index, const JobO
       accel_(make_accelerator(world_.primitives, options.accel)),
       camera_(job_.camera, job_.width, job_.height),
       integrator_(std::make_unique<WhittedIntegrator>(world_, *accel_, options.integrator)) {
+  if (const auto* grid = dynamic_cast<const UniformGrid*>(accel_.get())) {
+    if (std::string note = grid->resolution_note(); !note.empty()) warnings_.push_back(std::move(note));
+  }
   build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start_).count();
 }
 

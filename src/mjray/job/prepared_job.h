@@ -32,7 +32,7 @@ class PreparedJob {
   const Accelerator& accelerator() const { return *accel_; }
   const PinholeCamera& camera() const { return camera_; }
   const Integrator& integrator() const { return *integrator_; }
-  /// flatten's warnings ("file:line: text").
+  /// flatten's warnings ("file:line: text"), then the accelerator's (a grid smaller than asked).
   const std::vector<std::string>& warnings() const { return warnings_; }
   /// Seconds spent flattening and building the accelerator.
   double build_seconds() const { return build_seconds_; }
