@@ -47,7 +47,7 @@ JobOptions busy_options() {
 
 struct Fixture {
   test::TestJob job{busy_scene(64), busy_options()};
-  const PinholeCamera& camera = job.prepared().camera();
+  const Camera& camera = job.prepared().camera();
   const Integrator& integrator = job.prepared().integrator();
 };
 
