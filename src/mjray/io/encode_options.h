@@ -20,11 +20,11 @@ struct EncodeOptions {
   int jpeg_quality = 90;                     ///< JPEG only: 1 (smallest) to 100 (best)
   /// Seconds the render took, for formats whose header has a place for it (EXR). Integer
   /// formats leave it out, so that the same render always gives the same bytes.
-  std::optional<double> render_seconds;
+  std::optional<double> render_seconds{};
   /// Text the file keeps where its format has room for it (name, value), e.g. the options.
   /// PNG: tEXt chunks; PPM: header comments "# name: line", one per line of the value; JPEG:
   /// COM markers "name\nvalue"; EXR: string attributes.
-  ImageMetadata metadata;
+  ImageMetadata metadata{};
 };
 
 }  // namespace mjray

@@ -2,6 +2,7 @@
 
 #include "mjray/job/job_view.h"
 
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -30,6 +31,13 @@ std::string number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", value);
   return text;
+}
+
+/// The shortest text that reads back as `value`.
+std::string float_text(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
 }
 
 std::map<std::string, std::string> lines_of(const std::string& text) {
@@ -71,7 +79,7 @@ std::string JobFingerprints::of(size_t index) const {
   line("--gamma", o.outputs.encoding.gamma == OutputGamma::kSrgb ? "srgb" : "linear");  // decodes textures too
   line("--spp", std::to_string(o.render.samples_per_pixel));
   const CameraDescription camera = job_camera(job, o.view);
-  line("lens", camera.aperture_radius > 0 ? "aperture " + number(camera.aperture_radius) + ", focus " + number(camera.focus_distance)
+  line("lens", camera.aperture_radius > 0 ? "aperture " + float_text(camera.aperture_radius) + ", focus " + float_text(camera.focus_distance)
                                           : "pinhole");
   const auto& crop = o.render.crop;
   line("--crop", crop ? std::to_string(crop->x0) + "," + std::to_string(crop->y0) + "," + std::to_string(crop->x1) + "," +
