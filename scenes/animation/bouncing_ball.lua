@@ -64,13 +64,14 @@ for f = 0, frames - 1 do
   local t = f / fps
   local bottom, vy, squash = vertical(t)
   local x, vx = horizontal(t)
-  -- Squash on the floor (volume kept); in the air, stretch along the path when fast.
+  -- Squash on the floor (volume kept); in the air, stretch along the path as fast as it falls
+  -- or rises (round at the top of each arc, and once the bounces are over and it rolls on).
   local along, across, angle
   if squash > 0 then
     along, across, angle = 1 - 0.4 * squash, 1 / math.sqrt(1 - 0.4 * squash), 0
   else
     local speed = math.sqrt(vx * vx + vy * vy)
-    along = 1 + 0.25 * math.min(1, speed / contacts[1].speed)
+    along = 1 + 0.3 * math.min(1, math.abs(vy) / contacts[1].speed)
     across = 1 / math.sqrt(along)
     angle = speed > 0 and math.deg(math.atan(vx, vy)) or 0  -- from +y towards +x
   end

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -96,6 +97,9 @@ TEST(DepthOfField, TheBlurCircleOfAPointOffFocusMatchesTheThinLensFormula) {
     r2 /= energy;
     const double measured = 2 * std::sqrt(2 * (r2 - point_pixels * point_pixels / 8 - 1.0 / 6));
     EXPECT_NEAR(measured, expected, 1.0) << "depth " << depth << ", focus " << focus;
+    // In --gtest_output=xml, for the record.
+    RecordProperty("depth_" + std::to_string(int(depth)) + "_blur_pixels",
+                   std::to_string(measured) + " measured, " + std::to_string(expected) + " by the formula");
     EXPECT_NEAR(cx, margin, 0.5);
     EXPECT_NEAR(cy, margin, 0.5);
     EXPECT_LE(outermost, expected / 2 + 3) << "light outside the blur circle";

@@ -2,6 +2,7 @@
 // a penumbra falls as 1/√N.
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -98,6 +99,8 @@ TEST(StatSupersampling, PenumbraNoiseFallsAsOneOverTheRootOfTheSampleCount) {
     ++pixels;
   }
   ASSERT_GT(pixels, 100);
+  RecordProperty("noise_ratios", "4/16 spp " + std::to_string(d4 / d16) + ", 16/64 spp " + std::to_string(d16 / d64) +
+                                     " over " + std::to_string(pixels) + " pixels");
   // Four times the samples, half the noise.
   EXPECT_NEAR(d4 / d16, 2, 0.25);
   EXPECT_NEAR(d16 / d64, 2, 0.25);

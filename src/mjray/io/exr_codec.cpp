@@ -26,6 +26,7 @@ class MemoryStream : public Imf::OStream {
  public:
   MemoryStream() : Imf::OStream("memory") {}
   void write(const char c[], int n) override {
+    if (n <= 0) return;
     if (position_ + size_t(n) > bytes_.size()) bytes_.resize(position_ + size_t(n));
     std::memcpy(bytes_.data() + position_, c, size_t(n));
     position_ += size_t(n);

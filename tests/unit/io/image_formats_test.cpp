@@ -82,7 +82,7 @@ TEST_F(ImageFormats, ExrKeepsLinearValuesAboveOneWithinHalfPrecision) {
 TEST_F(ImageFormats, ExrIgnoresGammaAndRefusesABitDepth) {
   const Image image = film_like_image();
   write_image(image, dir_ / "srgb.exr", {.gamma = OutputGamma::kSrgb});
-  EXPECT_EQ(read_image(dir_ / "srgb.exr").at(1, 1).r, as_half(1.5f));
+  EXPECT_EQ(read_image(dir_ / "srgb.exr").at(2, 1).r, as_half(1.5f));
   try {
     check_image_output_format(dir_ / "deep.exr", {.bit_depth = 16});
     ADD_FAILURE() << "a bit depth for EXR was accepted";
@@ -109,7 +109,7 @@ TEST_F(ImageFormats, JpegQualityTradesSizeForFidelity) {
   Image image(64, 48);
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 64; ++x)
-      image.at(x, y) = Color(float(x) / 63, float(y) / 47, 0.5f + 0.5f * std::sin(float(x * y) * 0.05f));
+      image.at(x, y) = Color(float(x) / 63, float(y) / 47, 0.5f + 0.5f * std::sin(float(x) * 0.4f) * std::cos(float(y) * 0.3f));
   double errors[2] = {0, 0};
   size_t sizes[2] = {0, 0};
   const int qualities[2] = {30, 95};
