@@ -1,7 +1,12 @@
-// --spp, --size and --crop through renders and the program: the same image for any thread
-// count, a crop that is exactly its window of the whole image (anti-aliasing included), and a
-// resolution change that keeps the camera.
+// --spp, --size, --crop, the lens and the output formats through renders and the program: the
+// same image for any thread count, a crop that is exactly its window of the whole image
+// (anti-aliasing included), a resolution change that keeps the camera, and EXR, 16-bit PNG,
+// PNG and JPEG written from the same film.
 
+#include <ImfFloatAttribute.h>
+#include <ImfRgbaFile.h>
+
+#include <algorithm>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -173,6 +178,68 @@ TEST_F(CameraOptionsProgram, ResumeRefusesAnImageMadeWithOtherSamplingOrAnotherW
   EXPECT_NE(r.err.find("lens: pinhole then, aperture 0.2, focus 5 now"), std::string::npos) << r.err;
   r = test::run_mjray({"--quiet", "--resume", "--spp", "2", "--size", "12x8", scene.string()});
   EXPECT_NE(r.err.find("size: 24x16 then, 12x8 now"), std::string::npos) << r.err;
+}
+
+TEST_F(CameraOptionsProgram, ALensWithoutAFocusDistanceIsRefusedBeforeRendering) {
+  const fs::path scene = sphere_script(dir_, "lens.png", 24, 16);
+  const auto r = test::run_mjray({"--quiet", "--aperture", "0.2", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(":8: the lens has an aperture (radius 0.2) but no focus distance: give --focus-distance D"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "lens.png"));
+}
+
+TEST_F(CameraOptionsProgram, TheOutputsExtensionPicksTheFormatFromTheSameFilm) {
+  // A light bright enough that the highlight and the lit floor go above 1.
+  test::write_file(dir_ / "scene.lua",
+                   "local root = gr.node('root')\n"
+                   "local s = gr.nh_sphere('s', {0, 0.8, 0}, 0.8)\n"
+                   "s:set_material(gr.material({0.8, 0.3, 0.2}, {0.9, 0.9, 0.9}, 30))\n"
+                   "root:add_child(s)\n"
+                   "local f = gr.nh_box('f', {-10, -20, -10}, 20)\n"
+                   "f:set_material(gr.material({0.6, 0.6, 0.6}, {0, 0, 0}, 1))\n"
+                   "root:add_child(f)\n"
+                   "gr.render(root, 'out.png', 40, 30, {0, 2, 6}, {0, -0.3, -1}, {0, 1, 0}, 40, {0.2, 0.2, 0.2},\n"
+                   "          {gr.light({-2, 5, 4}, {3, 3, 3}, {1, 0, 0})})\n");
+  const fs::path scene = dir_ / "scene.lua";
+  for (const std::vector<std::string>& extra : {std::vector<std::string>{"--output", (dir_ / "film.exr").string()},
+                                               {"--output", (dir_ / "deep.png").string(), "--bit-depth", "16"},
+                                               {"--output", (dir_ / "eight.png").string()},
+                                               {"--output", (dir_ / "small.jpg").string(), "--jpeg-quality", "80"}}) {
+    std::vector<std::string> args = {"--quiet", "-a", "1"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(scene.string());
+    const auto r = test::run_mjray(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const Image film = read_image(dir_ / "film.exr"), deep = read_image(dir_ / "deep.png", {.keep_16_bits = true}),
+              eight = read_image(dir_ / "eight.png"), jpeg = read_image(dir_ / "small.jpg");
+  float brightest = 0;
+  for (size_t i = 0; i < film.pixels().size(); ++i) {
+    const Color& c = film.pixels()[i];
+    brightest = std::max({brightest, c.r, c.g, c.b});
+    for (const auto& [linear, sixteen, eight_bit] : {std::tuple{c.r, deep.pixels()[i].r, eight.pixels()[i].r},
+                                                     {c.g, deep.pixels()[i].g, eight.pixels()[i].g},
+                                                     {c.b, deep.pixels()[i].b, eight.pixels()[i].b}}) {
+      // The EXR holds the film as half floats (11 significant bits); the PNGs clamp it to 1.
+      const float clamped = std::min(linear, 1.f);
+      EXPECT_NEAR(sixteen, clamped, clamped * 0x1p-11f + 1.0f / 65535) << "pixel " << i;
+      EXPECT_NEAR(eight_bit, clamped, clamped * 0x1p-11f + 0.5f / 255 + 1e-6f) << "pixel " << i;
+    }
+  }
+  EXPECT_GT(brightest, 1.5f) << "the EXR keeps values above 1";
+  EXPECT_EQ(jpeg.width(), 40);
+  EXPECT_EQ(test::read_file(dir_ / "deep.png")[24], 16) << "the IHDR's bit depth";
+  EXPECT_EQ(test::read_file(dir_ / "eight.png")[24], 8);
+  // The EXR's header: the job's settings (what --resume compares) and the render time.
+  Imf::RgbaInputFile exr((dir_ / "film.exr").c_str());
+  const auto* seconds = exr.header().findTypedAttribute<Imf::FloatAttribute>("renderSeconds");
+  ASSERT_NE(seconds, nullptr);
+  EXPECT_GE(seconds->value(), 0.f);
+  std::string settings;
+  for (const auto& [key, value] : read_image_metadata(dir_ / "film.exr")) settings += key + ": " + value + "\n";
+  EXPECT_NE(settings.find("--spp"), std::string::npos) << settings;
+  EXPECT_NE(settings.find("lens"), std::string::npos) << settings;
 }
 
 }  // namespace
