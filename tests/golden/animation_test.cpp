@@ -157,6 +157,28 @@ TEST_F(Animation, MissingFfmpegIsFoundBeforeAnythingRenders) {
   EXPECT_NE(bad.err.find("--video expects a file ending in .mp4, .webm or .gif"), std::string::npos) << bad.err;
 }
 
+TEST_F(Animation, VideoFramesOfDifferentSizesOrFormatsAreRefusedBeforeAnythingRenders) {
+  std::string script = moving_ball(2);
+  script += "gr.render(root, 'frame_03.png', 20, 20, {1, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50,\n"
+            "          {0.2, 0.2, 0.2}, {gr.light({2, 3, 5}, {0.9, 0.9, 0.9}, {1, 0, 0})})\n"
+            "gr.render(root, 'frame_04.jpg', 30, 20, {1, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50,\n"
+            "          {0.2, 0.2, 0.2}, {gr.light({2, 3, 5}, {0.9, 0.9, 0.9}, {1, 0, 0})})\n";
+  const fs::path scene = write("scene.lua", script);
+  const std::string video = (dir_ / "movie.mp4").string();
+  auto r = test::run_mjray({"--quiet", "--frames", "1-3", "--video", video, scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("its frames must share one size, and '"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("is 30x20 but '"), std::string::npos) << r.err;
+  r = test::run_mjray({"--quiet", "--frames", "1-4:3", "--video", video, scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("its frames must share one image format"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(dir_), "scene.lua");
+  // --size makes them one size again.
+  r = test::run_mjray({"--quiet", "--frames", "1-3", "--size", "16x12", "--video", video, scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(video));
+}
+
 TEST_F(Animation, ProgressAndStatisticsNameEachFrameAndAddUpAtTheEnd) {
   const fs::path scene = write("scene.lua", moving_ball(3));
   auto r = test::run_mjray({"--outdir", (dir_ / "a").string(), scene.string()});
