@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake ninja-build pkg-config liblua5.4-dev libpng-dev libjpeg-dev zlib1g-dev libgtest-dev libembree-dev)
+packages=(g++ cmake ninja-build pkg-config liblua5.4-dev libpng-dev libjpeg-dev zlib1g-dev libgtest-dev libembree-dev
+          libopenexr-dev ffmpeg)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,11 +1,15 @@
 #include "cli.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
+#include <tuple>
 #include <utility>
 
 namespace mjray {
@@ -51,6 +55,91 @@ double parse_real(const std::string& option, const std::string& text, double lo,
   return value;
 }
 
+// --- camera, image and animation values ----------------------------------------------------
+
+/// A number of at least 0 (--aperture).
+double parse_at_least_zero(const std::string& option, const std::string& text, const std::string& expected) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value >= 0) || !std::isfinite(value))
+    throw UsageError(option + " expects " + expected + ", got '" + text + "'");
+  return value;
+}
+
+/// The whole numbers of `text` separated by `separator`, exactly `count` of them.
+std::vector<long long> parse_integers(const std::string& text, char separator, size_t count, const std::string& usage) {
+  std::vector<long long> values;
+  size_t start = 0;
+  while (true) {
+    const size_t end = std::min(text.find(separator, start), text.size());
+    long long value = 0;
+    const auto [stop, ec] = std::from_chars(text.data() + start, text.data() + end, value);
+    if (ec != std::errc() || stop != text.data() + end || end == start) throw UsageError(usage);
+    values.push_back(value);
+    if (end == text.size()) break;
+    start = end + 1;
+  }
+  if (values.size() != count) throw UsageError(usage);
+  return values;
+}
+
+/// Largest image --size accepts, as gr.render does: 2^27 pixels.
+constexpr long long kMaxPixels = 1LL << 27;
+
+/// --size WxH: whole numbers from 1 to 65536, at most 2^27 pixels.
+std::pair<int, int> parse_size(const std::string& option, const std::string& text) {
+  const std::string usage = option + " expects WIDTHxHEIGHT with whole numbers from 1 to 65536 (e.g. 640x360), got '" + text + "'";
+  const auto wh = parse_integers(text, 'x', 2, usage);
+  if (wh[0] < 1 || wh[1] < 1 || wh[0] > 65536 || wh[1] > 65536) throw UsageError(usage);
+  if (wh[0] * wh[1] > kMaxPixels)
+    throw UsageError(option + " " + text + " has more than 2^27 pixels (e.g. 16384x8192), the most mjray renders");
+  return {int(wh[0]), int(wh[1])};
+}
+
+/// --crop X0,Y0,X1,Y1: the pixels [X0, X1) × [Y0, Y1), not empty.
+PixelRect parse_crop(const std::string& option, const std::string& text) {
+  const std::string usage = option + " expects X0,Y0,X1,Y1: the window [X0, X1) x [Y0, Y1) in pixels, "
+                            "0 <= X0 < X1 <= 65536 and 0 <= Y0 < Y1 <= 65536, got '" + text + "'";
+  const auto v = parse_integers(text, ',', 4, usage);
+  if (v[0] < 0 || v[1] < 0 || v[0] >= v[2] || v[1] >= v[3] || v[2] > 65536 || v[3] > 65536) throw UsageError(usage);
+  return {int(v[0]), int(v[1]), int(v[2]), int(v[3])};
+}
+
+/// --frames A-B[:STEP] or N: 1-based gr.render calls, A <= B, STEP >= 1.
+FrameRange parse_frames(const std::string& option, const std::string& text) {
+  const std::string usage = option + " expects A-B or A-B:STEP (1-based gr.render calls, A <= B) or one call N, got '" + text + "'";
+  const size_t colon = text.find(':');
+  const std::string range = text.substr(0, colon);
+  FrameRange frames;
+  const auto bounds = range.find('-') == std::string::npos ? parse_integers(range, '-', 1, usage) : parse_integers(range, '-', 2, usage);
+  frames.first = int(std::clamp(bounds.front(), -1LL, 1LL << 30));
+  frames.last = int(std::clamp(bounds.back(), -1LL, 1LL << 30));
+  if (colon != std::string::npos) frames.step = int(std::clamp(parse_integers(text.substr(colon + 1), ':', 1, usage)[0], -1LL, 1LL << 30));
+  if (frames.first < 1 || *frames.last < frames.first || frames.step < 1) throw UsageError(usage);
+  return frames;
+}
+
+/// -D NAME=VALUE: NAME a Lua identifier that is not a keyword.
+std::pair<std::string, std::string> parse_define(const std::string& option, const std::string& text) {
+  static const std::set<std::string> keywords = {"and", "break", "do", "else", "elseif", "end", "false", "for",
+                                                 "function", "goto", "if", "in", "local", "nil", "not", "or",
+                                                 "repeat", "return", "then", "true", "until", "while"};
+  const size_t eq = text.find('=');
+  const std::string name = text.substr(0, eq);
+  const bool identifier = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                          std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  if (eq == std::string::npos || !identifier || keywords.count(name))
+    throw UsageError(option + " expects NAME=VALUE with NAME a Lua name (letters, digits, _; not a keyword), got '" + text + "'");
+  return {name, text.substr(eq + 1)};
+}
+
+/// The video formats --video makes, by extension.
+bool is_video_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".mp4" || extension == ".webm" || extension == ".gif";
+}
+
 #ifdef MJRAY_HAVE_EMBREE
 constexpr const char* kAccelKinds = "bvh (default), grid, none, embree";
 #else
@@ -69,6 +158,8 @@ class Parser {
  private:
   void long_option(const std::string& arg, const std::vector<std::string>& args, size_t& i);
   void short_options(const std::string& arg, const std::vector<std::string>& args, size_t& i);
+  /// --spp, the lens, --size, --crop, --frames, -D, --video, --fps and the encodings.
+  void add_camera_and_animation_options(CommandLine& cl);
 
   CommandLine& cl_;
   std::map<std::string, ValueHandler> with_value_;
@@ -115,6 +206,7 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
          else throw UsageError(o + " expects pre, post or auto, got '" + v + "'");
        }},
   };
+  add_camera_and_animation_options(cl);
   flags_ = {
       {"-o", [&] { cl.optimal_grid = true; }},
       {"--stats", [&] { cl.print_stats = true; }},
@@ -125,6 +217,32 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--help", [&] { cl.show_help = true; }},
       {"--version", [&] { cl.show_version = true; }},
   };
+}
+
+void Parser::add_camera_and_animation_options(CommandLine& cl) {
+  const ValueHandler define = [&](auto& o, auto& v) { cl.load.defines.push_back(parse_define(o, v)); };
+  with_value_.insert({
+      {"--spp", [&](auto& o, auto& v) { cl.samples_per_pixel = int(parse_integer(o, v, 1, 4096)); }},
+      {"--aperture", [&](auto& o, auto& v) { cl.aperture_radius = float(parse_at_least_zero(o, v, "a lens radius of at least 0")); }},
+      {"--focus-distance", [&](auto& o, auto& v) {
+         cl.focus_distance = float(parse_real(o, v, 0, 1e30, "a distance above 0"));
+       }},
+      {"--size", [&](auto& o, auto& v) { std::tie(cl.width, cl.height) = parse_size(o, v); }},
+      {"--crop", [&](auto& o, auto& v) { cl.crop = parse_crop(o, v); }},
+      {"--frames", [&](auto& o, auto& v) { cl.frames = parse_frames(o, v); }},
+      {"-D", define},
+      {"--define", define},
+      {"--video", [&](auto& o, auto& v) {
+         if (!is_video_extension(v)) throw UsageError(o + " expects a file ending in .mp4, .webm or .gif, got '" + v + "'");
+         cl.video = v;
+       }},
+      {"--fps", [&](auto& o, auto& v) { cl.fps = int(parse_integer(o, v, 1, 1000)); }},
+      {"--bit-depth", [&](auto& o, auto& v) {
+         if (v != "8" && v != "16") throw UsageError(o + " expects 8 or 16, got '" + v + "'");
+         cl.bit_depth = v == "8" ? 8 : 16;
+       }},
+      {"--jpeg-quality", [&](auto& o, auto& v) { cl.jpeg_quality = int(parse_integer(o, v, 1, 100)); }},
+  });
 }
 
 void Parser::long_option(const std::string& arg, const std::vector<std::string>& args, size_t& i) {
@@ -186,6 +304,7 @@ void Parser::parse(const std::vector<std::string>& args) {
 /// Options that change nothing with the others given, each named once.
 std::vector<std::string> ignored_options(const CommandLine& cl) {
   std::vector<std::string> warnings;
+  if (cl.fps != 24 && !cl.video) warnings.push_back("--fps has no effect without --video");
   if (cl.accel.empty() || cl.accel == "grid") return warnings;
   if (cl.grid_size) warnings.push_back("-g has no effect with --accel " + cl.accel + " (it sizes the grid of --accel grid)");
   if (cl.optimal_grid) warnings.push_back("-o has no effect with --accel " + cl.accel + " (it sizes the grid of --accel grid)");
@@ -210,13 +329,31 @@ options:
   --aa-threshold T     colour difference from a neighbour that makes a pixel bad (default 0.1)
   --accel KIND         acceleration structure: )") + kAccelKinds + R"(
   -j, --threads N      worker threads (default: all cores)
-  --output FILE        write the (single) image to FILE (its folder is created)
+  --output FILE        write the (single) image to FILE (its folder is created); the extension
+                       picks the format: .png, .ppm, .jpg, .exr (linear half float)
   --outdir DIR         write every image into DIR (created), under the file name gr.render gives
   --stats              print the statistics of each image (time, rays, memory)
   --stats-json FILE    write the statistics as JSON
   --seed N             seed of all random sampling (default 0)
   --gamma linear|srgb  encoding of 8-bit output (default linear, as CS 488); srgb also decodes
                        8-bit image textures from sRGB
+  --spp N              N stratified samples in every pixel (default 1: the pixel centre); with
+                       -a, a bad pixel gets N x N cells of N samples
+  --aperture R         thin-lens depth of field with lens radius R (overrides gr.lens; 0 = pinhole)
+  --focus-distance D   distance along the view direction that is in focus (overrides gr.lens)
+  --size WxH           render at W x H pixels with the same camera (the vertical field of view
+                       is kept)
+  --crop X0,Y0,X1,Y1   render and write only the pixels [X0, X1) x [Y0, Y1) of the image
+  --frames A-B[:STEP]  render only these gr.render calls (1-based, in script order), e.g. 3-5,
+                       1-96:4, 7
+  -D, --define NAME=VALUE
+                       set the Lua global NAME before the script runs (a number when VALUE reads
+                       as one, else a string), e.g. -D frame=7
+  --video FILE         encode the rendered images in order into FILE (.mp4, .webm or .gif) with
+                       ffmpeg
+  --fps N              frames per second of --video (default 24)
+  --bit-depth 8|16     bits per channel of PNG output (default 8)
+  --jpeg-quality N     quality of .jpg output, 1 to 100 (default 90)
   --transform-order pre|post|auto
                        how node transforms compose (default auto: post when the first
                        gr.render draws a table-form gr.mesh or a gr.extendedmesh, else pre)
@@ -255,6 +392,12 @@ JobOptions job_options(const CommandLine& cl) {
   o.outputs.outdir = cl.outdir;
   o.outputs.confine_script_outputs = !cl.load.unsafe_lua;
   o.outputs.encoding.gamma = cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear;
+  o.render.samples_per_pixel = cl.samples_per_pixel;
+  o.render.crop = cl.crop;
+  o.view = {cl.aperture_radius, cl.focus_distance, cl.width, cl.height};
+  o.frames = cl.frames;
+  o.outputs.encoding.bit_depth = cl.bit_depth;
+  o.outputs.encoding.jpeg_quality = cl.jpeg_quality;
   return o;
 }
 

@@ -31,7 +31,20 @@ struct CommandLine {
   bool quiet = false;
   bool resume = false;
   bool srgb = false;                   // --gamma srgb
-  SceneLoadOptions load;
+  SceneLoadOptions load;               // also -D/--define: load.defines
+
+  // Camera, image and animation.
+  int samples_per_pixel = 1;           // --spp
+  std::optional<float> aperture_radius;  // --aperture
+  std::optional<float> focus_distance;   // --focus-distance
+  std::optional<int> width, height;    // --size WxH
+  std::optional<PixelRect> crop;       // --crop X0,Y0,X1,Y1
+  std::optional<FrameRange> frames;    // --frames A-B:STEP
+  std::optional<std::filesystem::path> video;  // --video
+  int fps = 24;                        // --fps
+  int bit_depth = 8;                   // --bit-depth
+  int jpeg_quality = 90;               // --jpeg-quality
+
   bool show_help = false;
   bool show_version = false;
   std::vector<std::string> warnings;   ///< options that change nothing with the others given

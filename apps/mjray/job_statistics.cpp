@@ -1,5 +1,6 @@
 #include "job_statistics.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -35,6 +36,46 @@ std::string summary_text(const JobStatistics& s) {
                 s.rays_per_second() / 1e6, (unsigned long long)s.render.pixels_supersampled,
                 s.render.antialias_passes, double(s.peak_rss_bytes) / (1024.0 * 1024.0));
   return text;
+}
+
+std::string frame_line(const JobStatistics& s, const std::string& frame, bool detailed) {
+  char text[512];
+  if (!detailed) {
+    std::snprintf(text, sizeof text, "mjray: wrote %s (%s, %.2fs)\n", s.image.c_str(), frame.c_str(), s.seconds_total());
+    return text;
+  }
+  std::snprintf(text, sizeof text,
+                "mjray: wrote %s (%s): %.3fs (build %.3fs, render %.3fs), %llu rays at %.2f M rays/s, %llu pixels "
+                "supersampled, %.1f MiB peak\n",
+                s.image.c_str(), frame.c_str(), s.seconds_total(), s.seconds_build, s.seconds_render,
+                (unsigned long long)s.render.rays.total(), s.rays_per_second() / 1e6,
+                (unsigned long long)s.render.pixels_supersampled, double(s.peak_rss_bytes) / (1024.0 * 1024.0));
+  return text;
+}
+
+std::string animation_summary(const std::vector<JobStatistics>& frames, size_t kept, bool detailed) {
+  JobStatistics all;
+  all.seconds_parse = frames.empty() ? 0 : frames.front().seconds_parse;
+  for (const JobStatistics& s : frames) {
+    all.seconds_build += s.seconds_build;
+    all.seconds_render += s.seconds_render;
+    all.render.seconds += s.render.seconds;
+    all.render.rays += s.render.rays;
+    all.render.threads = s.render.threads;
+    all.render.pixels_supersampled += s.render.pixels_supersampled;
+    all.render.antialias_passes += s.render.antialias_passes;
+    all.primitives = std::max(all.primitives, s.primitives);
+    all.peak_rss_bytes = std::max(all.peak_rss_bytes, s.peak_rss_bytes);
+    if (all.accel.empty()) all.accel = s.accel;
+  }
+  char head[256];
+  const std::string kept_text = kept > 0 ? " (" + std::to_string(kept) + " kept)" : "";
+  std::snprintf(head, sizeof head, "mjray: rendered %zu frame%s%s in %.3fs\n", frames.size(), frames.size() == 1 ? "" : "s",
+                kept_text.c_str(), all.seconds_total());
+  if (!detailed) return head;
+  // The paragraph of one image, over every frame: its first line replaced by the head.
+  const std::string paragraph = summary_text(all);
+  return head + paragraph.substr(paragraph.find('\n') + 1);
 }
 
 namespace {

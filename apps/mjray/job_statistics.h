@@ -32,6 +32,15 @@ uint64_t peak_rss_bytes();
 /// The one-paragraph summary printed after a render.
 std::string summary_text(const JobStatistics& s);
 
+/// The line printed after each frame of an animation: "mjray: wrote FILE (frame 7/24, 0.84s)",
+/// or with `detailed` (--stats) the frame's times, rays and memory on that line.
+std::string frame_line(const JobStatistics& s, const std::string& frame, bool detailed);
+
+/// What an animation's frames rendered in this run add up to (the script parsed once):
+/// "mjray: rendered 24 frames (2 kept) in 12.3s", or with `detailed` the paragraph of
+/// summary_text over all of them.
+std::string animation_summary(const std::vector<JobStatistics>& frames, size_t kept, bool detailed);
+
 /// Writes the list of job statistics as a JSON array of objects. Throws OutputError.
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path);
 

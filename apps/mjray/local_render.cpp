@@ -80,8 +80,9 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   }
   bool finished = false;
   {
+    const PixelRect& traced = render.region();
     RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding,
-                                                 options.render, job.width(), job.height()});
+                                                 options.render, traced.x1 - traced.x0, traced.y1 - traced.y0, run.frame});
     finished = render.run();
     if (finished) watcher.finish();
   }
@@ -101,10 +102,12 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   // The finished image records what made it, so that a later --resume can keep it.
   EncodeOptions encoding = options.outputs.encoding;
   encoding.metadata.emplace_back(kFingerprintKey, fingerprint);
+  encoding.render_seconds = stats.seconds_render;
   write_image(render.image(), job.output(), encoding);
   std::filesystem::remove(state_path, ec);
   stats.peak_rss_bytes = peak_rss_bytes();
-  if (run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
+  if (!run.frame.empty() && (run.print_stats || !run.quiet)) std::fputs(frame_line(stats, run.frame, run.print_stats).c_str(), stderr);
+  else if (run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
   else if (!run.quiet) std::fprintf(stderr, "mjray: wrote %s\n", stats.image.c_str());
   return stats;
 }

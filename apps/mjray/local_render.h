@@ -20,6 +20,9 @@ struct LocalRunOptions {
   /// complete image that records this job's fingerprint, render an absent one.
   bool resume = false;
   double snapshot_interval_seconds = 5;
+  /// "frame 7/24" when the scene renders several images: shown with the progress, and the
+  /// statistics shrink to one line (the caller prints their sum at the end).
+  std::string frame;
 };
 
 /// Thrown when the user interrupted a render (the partial image and state are written);

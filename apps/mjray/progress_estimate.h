@@ -23,6 +23,7 @@ struct ProgressView {
 /// Turns the counters of one ImageRender into a ProgressView.
 class ProgressEstimate {
  public:
+  /// width × height: the pixels the render traces (ImageRender::region()).
   ProgressEstimate(int width, int height, const RenderSettings& settings);
 
   /// Every tick: the render's counters and the seconds since this run started.

@@ -98,6 +98,7 @@ void RenderWatcher::report(double elapsed, bool final) {
   const double fraction = complete ? 1.0 : v.fraction;
   const double eta = complete ? 0 : v.eta_seconds;
   const double rays_per_second = elapsed > 0 ? double(render_.progress().rays) / elapsed : 0;
+  const std::string frame = options_.frame.empty() ? "" : options_.frame + ": ";
   std::string stage;
   if (!complete && v.choosing_pixels) stage = " (anti-aliasing: choosing pixels)";
   else if (!complete && v.antialias_pass > 0) stage = " (anti-aliasing pass " + std::to_string(v.antialias_pass) + ")";
@@ -107,8 +108,8 @@ void RenderWatcher::report(double elapsed, bool final) {
     const int filled = int(fraction * kWidth);
     std::string bar(size_t(filled), '=');
     if (filled < kWidth) bar += '>' + std::string(size_t(kWidth - filled - 1), ' ');
-    std::fprintf(stderr, "\r[%s] %5.1f%%  %6.2f Mrays/s  elapsed %s  ETA %s%s\033[K", bar.c_str(), fraction * 100,
-                 rays_per_second / 1e6, clock_text(elapsed).c_str(), clock_text(eta).c_str(), stage.c_str());
+    std::fprintf(stderr, "\r%s[%s] %5.1f%%  %6.2f Mrays/s  elapsed %s  ETA %s%s\033[K", frame.c_str(), bar.c_str(),
+                 fraction * 100, rays_per_second / 1e6, clock_text(elapsed).c_str(), clock_text(eta).c_str(), stage.c_str());
     if (final) std::fputc('\n', stderr);
     return;
   }
@@ -119,7 +120,7 @@ void RenderWatcher::report(double elapsed, bool final) {
   if (!final && percent == last_percent_ && elapsed - last_line_at_ < kQuietLineInterval) return;
   last_percent_ = percent;
   last_line_at_ = elapsed;
-  std::fprintf(stderr, "mjray: %3d%% done, %.1fs elapsed, ETA %s, %.2f Mrays/s%s\n", percent, elapsed,
+  std::fprintf(stderr, "mjray: %s%3d%% done, %.1fs elapsed, ETA %s, %.2f Mrays/s%s\n", frame.c_str(), percent, elapsed,
                clock_text(eta).c_str(), rays_per_second / 1e6, stage.c_str());
 }
 

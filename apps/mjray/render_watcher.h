@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <filesystem>
+#include <string>
 #include <thread>
 
 #include "progress_estimate.h"
@@ -23,7 +24,8 @@ struct WatchOptions {
   double snapshot_interval_seconds = 5; ///< incremental image rewrites; 0 = never
   EncodeOptions encoding;               ///< of the incremental image rewrites
   RenderSettings render;                ///< of the render watched, for the estimate of its work
-  int width = 0, height = 0;
+  int width = 0, height = 0;            ///< of the pixels it traces (ImageRender::region())
+  std::string frame;                    ///< "frame 7/24" in animations, shown before the progress
 };
 
 /// Runs while it lives; the destructor stops the thread and prints the final 100% line.

@@ -47,7 +47,7 @@ JobOptions busy_options() {
 
 struct Fixture {
   test::TestJob job{busy_scene(64), busy_options()};
-  const PinholeCamera& camera = job.prepared().camera();
+  const Camera& camera = job.prepared().camera();
   const Integrator& integrator = job.prepared().integrator();
 };
 
@@ -320,10 +320,41 @@ TEST(GoldenRender, ResumeFinishesAnInterruptedAnimationIdentically) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(GoldenRender, ResumeFinishesInterruptedJpegAndExrFramesIdentically) {
+  // As for PNG: the state beside a partial frame holds the film, so the resumed frame has the
+  // uninterrupted one's pixels (and, for JPEG, bytes; EXR also records the render time).
+  for (const char* format : {"jpg", "exr"}) {
+    const auto dir = test::make_temp_dir(std::string("animation-") + format);
+    std::string script = sphere_field(1200, 150, 100, std::string("'frame' .. i .. '.") + format + "'");
+    script = "for i = 1, 2 do\n" + script + "end\n";
+    const auto scene = test::write_file(dir / "scene.lua", script);
+    const std::string mjray = test::mjray_binary().string();
+    ASSERT_EQ(run("'" + mjray + "' --quiet --outdir '" + (dir / "reference").string() + "' '" + scene.string() + "'"), 0);
+    const std::string frame1 = std::string("frame1.") + format, frame2 = std::string("frame2.") + format;
+    Child first({"--accel", "none", "-j", "1", scene.string()});
+    ASSERT_TRUE(first.wait_for("mjray: wrote " + (dir / frame1).string())) << first.log();
+    first.interrupt();
+    ASSERT_EQ(first.exit_code(), 130) << first.log();
+    ASSERT_TRUE(std::filesystem::exists(dir / (frame2 + ".mjray-state"))) << format;
+    Child resumed({"--resume", scene.string()});
+    EXPECT_EQ(resumed.exit_code(), 0) << resumed.log();
+    EXPECT_NE(resumed.log().find("mjray: kept " + (dir / frame1).string() + " (complete)\n"), std::string::npos)
+        << resumed.log();
+    for (const std::string& frame : {frame1, frame2}) {
+      EXPECT_EQ(read_image(dir / frame).pixels(), read_image(dir / "reference" / frame).pixels()) << frame;
+      if (std::string(format) == "jpg") {
+        EXPECT_EQ(read_file(dir / frame), read_file(dir / "reference" / frame)) << frame;
+      }
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / (frame2 + ".mjray-state")));
+    std::filesystem::remove_all(dir);
+  }
+}
+
 TEST(GoldenRender, ResumeKeepsACompleteImageOnlyWhenTheSameSceneMadeIt) {
   const auto dir = test::make_temp_dir("resume-complete");
   const std::string mjray = test::mjray_binary().string();
-  for (const char* image : {"one.png", "one.ppm"}) {
+  for (const char* image : {"one.png", "one.ppm", "one.jpg", "one.exr"}) {
     const auto scene = test::write_file(dir / "scene.lua", sphere_field(10, 8, 6, std::string("'") + image + "'"));
     const auto log = dir / "log.txt";
     const auto mjray_run = [&](const std::string& options) {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/image_render.h"

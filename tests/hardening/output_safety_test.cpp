@@ -250,7 +250,7 @@ TEST_F(HardeningOutput, OutputMistakesAreFoundBeforeAnyPixelIsTraced) {
                            "{gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n";
   for (const auto& [output, problem] : std::vector<std::pair<std::string, std::string>>{
            {"nodir/e.png", "folder '" + (dir_ / "nodir").string() + "' does not exist"},
-           {"e.jpg", "unsupported image format '.jpg' (mjray writes .png, .ppm)"}}) {
+           {"e.tga", "unsupported image format '.tga' (mjray writes .png, .ppm, .jpg, .jpeg, .exr)"}}) {
     const auto scene = write("scene.lua", lit_sphere("'small.png'", 8) + slow + lit_sphere("'" + output + "'", 8));
     const auto start = std::chrono::steady_clock::now();
     const RunResult r = run({scene.string()});

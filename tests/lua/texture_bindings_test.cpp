@@ -190,7 +190,7 @@ TEST_F(LuaTextureErrors, MissingImageFileNamesTheFileAndTheLine) {
 TEST_F(LuaTextureErrors, UndecodableImageIsAClearError) {
   const fs::path bad = write("notes.png", "this is not an image\n");
   EXPECT_EQ(error_of("t = gr.filetexture('notes.png')\n"),
-            at(1) + "gr.filetexture: cannot read '" + bad.string() + "': not a PNG, JPEG or binary (P6) PPM file");
+            at(1) + "gr.filetexture: cannot read '" + bad.string() + "': not a PNG, JPEG, OpenEXR or binary (P6) PPM file");
   // A PNG signature followed by garbage.
   const fs::path cut = write("cut.png", std::string("\x89PNG\r\n\x1a\n", 8) + "garbage");
   const std::string message = error_of("\nt = gr.filetexture('cut.png')\n");

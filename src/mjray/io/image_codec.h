@@ -28,7 +28,7 @@ struct ImageCodec {
 /// 'PATH': …") naming the formats mjray writes when there is none.
 const ImageCodec& codec_for(const std::filesystem::path& path);
 
-/// The extensions mjray writes, for messages: ".png, .ppm".
+/// The extensions mjray writes, for messages: ".png, .ppm, .jpg, .jpeg, .exr".
 std::string writable_extensions();
 
 /// Checks that `path` has a known extension whose format takes `options`. Throws OutputError

@@ -8,10 +8,10 @@
 
 namespace mjray {
 
-/// One "name=value" line per thing that shapes the image of job `index`: the bytes of the
-/// script and of every file it read (as hashes), the job's place in the script, its size,
-/// transform order, and every option that changes pixels (not threads or the accelerator,
-/// which never do). Reads the files, so call it only when a state is saved or resumed.
+/// One "name=value" line per thing that shapes the image file of job `index`: the bytes of
+/// the script and of every file it read (as hashes), the -D globals, the job's place in the
+/// script, its size, transform order, lens, and every option that changes pixels or their
+/// encoding (not threads or the accelerator, which never do). Reads the files, so call it only when a state is saved or resumed.
 std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& options);
 
 /// The fingerprints of every job of one scene, reading each file once.

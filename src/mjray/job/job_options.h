@@ -21,12 +21,28 @@ struct OutputOptions {
   EncodeOptions encoding;
 };
 
+/// What the command line changes about every job's camera and image size.
+struct ViewOptions {
+  std::optional<float> aperture_radius;  ///< --aperture: the thin lens's radius, over gr.lens's
+  std::optional<float> focus_distance;   ///< --focus-distance: over gr.lens's
+  std::optional<int> width, height;      ///< --size WxH: over gr.render's, same camera (vertical field kept)
+};
+
+/// --frames A-B:STEP: the gr.render calls to render, 1-based in script order.
+struct FrameRange {
+  int first = 1;
+  std::optional<int> last;  ///< unset: the last call
+  int step = 1;
+};
+
 /// The options of every job of one run.
 struct JobOptions {
   AcceleratorOptions accel;
   IntegratorSettings integrator;
-  RenderSettings render;
+  RenderSettings render;  ///< with the --crop window (render.crop)
   OutputOptions outputs;
+  ViewOptions view;
+  std::optional<FrameRange> frames;  ///< unset: every gr.render call
 };
 
 }  // namespace mjray

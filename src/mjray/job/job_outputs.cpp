@@ -58,11 +58,18 @@ fs::path output_path(const SceneDescription& scene, size_t index, const OutputOp
 }
 
 std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options) {
-  if (options.output && scene.jobs.size() > 1)
+  std::vector<size_t> every_job(scene.jobs.size());
+  for (size_t i = 0; i < every_job.size(); ++i) every_job[i] = i;
+  return check_outputs(scene, options, every_job);
+}
+
+std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options,
+                                       const std::vector<size_t>& jobs) {
+  if (options.output && jobs.size() > 1)
     throw SceneError(scene.script.string() + ": --output names one file but the scene renders " +
-                     std::to_string(scene.jobs.size()) + " images; use --outdir");
+                     std::to_string(jobs.size()) + " images; use --outdir");
   const bool named_by_script = !options.output && !options.outdir;
-  for (size_t i = 0; i < scene.jobs.size(); ++i) {
+  for (const size_t i : jobs) {
     const fs::path path = output_path(scene, i, options);
     check_not_an_input(scene, path, scene.jobs[i].where, "gr.render");
     if (!named_by_script) {
@@ -85,7 +92,7 @@ std::vector<std::string> check_outputs(const SceneDescription& scene, const Outp
 
   std::vector<std::string> warnings;
   std::map<fs::path, size_t> first_writer;
-  for (size_t i = 0; i < scene.jobs.size(); ++i) {
+  for (const size_t i : jobs) {
     const fs::path path = output_path(scene, i, options);
     const auto [it, first] = first_writer.emplace(resolved(path), i);
     if (first) continue;

@@ -23,6 +23,9 @@ std::filesystem::path output_path(const SceneDescription& scene, size_t index, c
 /// (--outdir, the folder of --output). Throws SceneError (with the gr.render call's location)
 /// or OutputError. Returns warnings: images that a later gr.render overwrites.
 std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options);
+/// check_outputs of the jobs `jobs` only (indices into scene.jobs, e.g. those --frames selects).
+std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options,
+                                       const std::vector<size_t>& jobs);
 
 /// Throws SceneError("WHERE: WHAT would overwrite 'FILE', which the scene reads ...") when
 /// `output` is the script or one of scene.inputs (compared as canonical paths, so links and

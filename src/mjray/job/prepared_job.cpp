@@ -3,16 +3,18 @@
 #include "mjray/accel/uniform_grid.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/job/job_outputs.h"
+#include "mjray/job/job_view.h"
 #include "mjray/scene/flatten.h"
 
 namespace mjray {
 
 PreparedJob::PreparedJob(const SceneDescription& scene, size_t index, const JobOptions& options)
     : job_(scene.jobs.at(index)),
+      size_(job_image_size(job_, options.view)),
       output_(output_path(scene, index, options.outputs)),
       world_(flatten(job_, &warnings_)),
       accel_(make_accelerator(world_.primitives, options.accel)),
-      camera_(job_.camera, job_.width, job_.height),
+      camera_(job_camera(job_, options.view), size_.width, size_.height),
       integrator_(std::make_unique<WhittedIntegrator>(world_, *accel_, options.integrator)) {
   if (const auto* grid = dynamic_cast<const UniformGrid*>(accel_.get())) {
     if (std::string note = grid->resolution_note(); !note.empty()) warnings_.push_back(std::move(note));

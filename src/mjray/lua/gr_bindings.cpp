@@ -16,7 +16,7 @@ extern "C" {
 #include <lua.h>
 }
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/io/obj_loader.h"
 #include "mjray/io/path_resolver.h"
 #include "mjray/lua/lua_arguments.h"
@@ -269,7 +269,7 @@ class Snapshot {
 };
 
 /// Checks the camera here so that the error names the gr.render line; the tests mirror
-/// PinholeCamera's, which stays the final word.
+/// Camera's, which stays the final word.
 void check_camera(const RenderJob& job) {
   const CameraDescription& c = job.camera;
   // Scaled to a largest component of 1 first, so that huge or tiny vectors square safely.
@@ -283,7 +283,7 @@ void check_camera(const RenderJob& job) {
   if (!(length(up_ortho) > 1e-6f * length(up)))
     throw ArgumentError("gr.render: the up vector is parallel to the view direction");
   try {
-    PinholeCamera(c, job.width, job.height);
+    Camera(c, job.width, job.height);
   } catch (const SceneError& e) {
     throw ArgumentError(std::string("gr.render: ") + e.what());
   }
@@ -345,6 +345,9 @@ int gr_render(lua_State* L) {
   job.camera.view = arg_vector(L, 6, fn, "view");
   job.camera.up = arg_vector(L, 7, fn, "up");
   job.camera.fovy_degrees = float(arg_number(L, 8, fn, "fovy"));
+  job.camera.aperture_radius = ctx.aperture_radius;
+  job.camera.focus_distance = ctx.focus_distance;
+  job.background = ctx.background;
   job.ambient = arg_color(L, 9, fn, "ambient");
   if (lua_type(L, 10) != LUA_TTABLE) bad_argument(L, fn, 10, "lights", "a table of lights");
   const auto light_count = lua_Integer(lua_rawlen(L, 10));
@@ -414,6 +417,7 @@ void register_gr(lua_State* L) {
   luaL_newlib(L, gr_functions);
   lua_setglobal(L, "gr");
   register_textures(L);
+  register_view(L);
 }
 
 }  // namespace mjray::lua

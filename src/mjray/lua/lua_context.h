@@ -89,6 +89,9 @@ struct LoaderContext {
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache;
   std::vector<std::weak_ptr<LuaNode>> nodes;  ///< every node made, to break cycles at the end
   std::set<std::string> warned;  ///< warnings given, so that a loop gives each once
+  /// gr.lens's and gr.background's, for the gr.render calls after them.
+  float aperture_radius = 0, focus_distance = 0;
+  Background background;
 
   LoaderContext() = default;
   LoaderContext(const LoaderContext&) = delete;
@@ -109,6 +112,8 @@ void register_extensions(lua_State* L);
 /// Adds the textures (gr.*texture) to `gr` and set_material_texture to materials; needs
 /// register_gr first.
 void register_textures(lua_State* L);
+/// Adds gr.lens and gr.background to `gr`; needs register_gr first.
+void register_view(lua_State* L);
 /// Adds what CS 488 scripts of both course generations expect: unpack, string.gfind,
 /// the scene folder on the require path, and a built-in readobj module.
 void install_compatibility(lua_State* L);

@@ -223,6 +223,19 @@ class Watchdog {
   std::thread thread_;
 };
 
+/// Sets the -D globals: a number where Lua reads the text as one, else the text.
+void set_defines(lua_State* L, const SceneLoadOptions& options, const std::filesystem::path& script) {
+  for (const auto& [name, value] : options.defines) {
+    const int type = lua_getglobal(L, name.c_str());
+    lua_pop(L, 1);
+    if (type != LUA_TNIL)
+      throw SceneError(script.string() + ": -D " + name + "=" + value + " would replace the global '" + name +
+                       "' that mjray or Lua defines (a " + lua_typename(L, type) + "); choose another name");
+    if (lua_stringtonumber(L, value.c_str()) == 0) lua_pushstring(L, value.c_str());
+    lua_setglobal(L, name.c_str());
+  }
+}
+
 /// lua_atpanic: an error outside any protected call (only while the libraries are installed).
 int on_panic(lua_State* L) {
   const char* message = lua_tostring(L, -1);
@@ -263,6 +276,8 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   lua::register_gr(L);
   lua::register_extensions(L);
   lua::guard_gr_names(L);
+  lua::set_defines(L, options, script);
+  description.defines = options.defines;
 
   std::error_code ec;
   if (!std::filesystem::exists(script, ec))

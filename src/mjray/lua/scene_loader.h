@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mjray/scene/scene_description.h"
 
@@ -37,11 +39,14 @@ struct SceneLoadOptions {
   /// Most Lua VM instructions the script may run (deterministic, for tests and fuzzing);
   /// 0 = no limit.
   uint64_t instruction_limit = 0;
+  /// -D NAME=VALUE: globals set before the script runs, numbers where Lua reads VALUE as one
+  /// ("7", "0.25", "1e3"), else strings. Names must be Lua identifiers that name no global yet.
+  std::vector<std::pair<std::string, std::string>> defines;
 };
 
 /// Runs `script` and collects its gr.render calls. Throws SceneError with "file:line: problem"
 /// for syntax errors, runtime errors, bad gr.* arguments and sandbox violations, and when the
-/// script renders nothing.
+/// script renders nothing; and for a -D that would replace a global mjray or Lua defines.
 SceneDescription load_scene(const std::filesystem::path& script, const SceneLoadOptions& options);
 
 }  // namespace mjray

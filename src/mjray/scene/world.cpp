@@ -86,9 +86,6 @@ SurfaceInteraction World::shade(const Ray& ray, const Hit& hit) const {
   return si;
 }
 
-Color World::background_radiance(const Vector3& direction) const {
-  const float up = std::clamp(direction.y / length(direction), 0.f, 1.f);
-  return background.horizon * (1 - up) + background.zenith * up;
-}
+Color World::background_radiance(const Vector3& direction) const { return background.radiance(direction); }
 
 }  // namespace mjray

@@ -24,7 +24,7 @@ RenderJob looking_down(float height, int size, float fovy) {
 }
 
 /// Where the ray through pixel centre (i, j) of `looking_down` meets the plane y = 0,
-/// computed from the pinhole model independently of PinholeCamera.
+/// computed from the pinhole model independently of Camera.
 Point3 floor_point(int i, int j, float height, int size, float fovy) {
   const double half = std::tan(double(fovy) * std::numbers::pi / 360.0);
   const double sx = (2 * (i + 0.5) / size - 1) * half, sy = (1 - 2 * (j + 0.5) / size) * half;
