@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake ninja-build pkg-config liblua5.4-dev libpng-dev libjpeg-dev zlib1g-dev libgtest-dev libembree-dev)
+packages=(g++ cmake ninja-build pkg-config liblua5.4-dev libpng-dev libjpeg-dev zlib1g-dev libgtest-dev libembree-dev openmpi-bin libopenmpi-dev)
 
 missing=()
 for p in "${packages[@]}"; do
