@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
     distribution = take_distribution(args);
     cl = parse_command_line(args);
   } catch (const UsageError& e) {
-    if (root) std::fprintf(stderr, "mjray: %s\n(run 'mjray-mpi --help' for the options)\n", e.what());
+    if (!root) return 0;
+    std::fprintf(stderr, "mjray: %s\n(run 'mjray-mpi --help' for the options)\n", e.what());
     return 2;
   }
   if (cl.show_help || cl.show_version) {
@@ -101,15 +102,16 @@ int main(int argc, char** argv) {
   const double load_seconds = seconds_since(start);
   std::vector<RankStatistics> ranks;
   if (const auto errors = agree_on_load(world, load_seconds, load_error, ranks); !errors.empty()) {
-    if (root)
-      for (const auto& e : errors) print_error(e);
+    if (!root) return 0;  // rank 0's exit code stands for the run
+    for (const auto& e : errors) print_error(e);
     return 1;
   }
   const JobOptions options = job_options(cl);
   const JobFingerprints fingerprints(scene, options);
   if (const std::string verdict = agree_on_scene(world, all_fingerprints(fingerprints, scene.jobs.size()), ranks);
       !verdict.empty()) {
-    if (root) print_error(verdict);
+    if (!root) return 0;
+    print_error(verdict);
     return 1;
   }
   // Every rank keeps going until rank 0 ends the run (mpirun signals them all on Ctrl-C).

@@ -1,6 +1,7 @@
 #include "tile_distributor.h"
 
 #include <chrono>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 
@@ -83,6 +84,10 @@ bool TileDistributor::run(std::deque<WorkUnit> units, std::stop_token stop,
     if (!stopped_at) top_up();
     if (queue_.empty() && in_hand_ == 0) break;
     if (stopped_at && std::chrono::duration<double>(Clock::now() - *stopped_at).count() > kStopGraceSeconds) {
+      for (size_t k = 1; k < ranks_.size(); ++k)
+        if (ranks_[k].in_hand > 0)
+          std::fprintf(stderr, "mjray: warning: rank %zu did not return its last %d units; --resume renders them\n", k,
+                       ranks_[k].in_hand);
       complete = false;
       break;
     }
