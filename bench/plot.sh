@@ -80,12 +80,12 @@ set terminal pngcairo size 1200,520 font 'DejaVu Sans,11' noenhanced
 set output '$DOCS/perf_mpi.png'
 set multiplot layout 1,2
 set datafile separator whitespace
-set title 'Measured on 2 cores: speed-up over mjray -j 1'
+set title 'Measured here: whole-process speed-up over mjray -j 1'
 set xlabel 'ranks x threads per rank (threads for mjray)'
 set ylabel 'speed-up'
 set xrange [0.5:4.5]
 set xtics 1
-set yrange [0:2.4]
+set yrange [0:*]
 set key top left font ',9'
 set grid
 plot $left
@@ -95,7 +95,7 @@ set xlabel 'nodes'
 set ylabel 'efficiency (%)'
 set logscale x 2
 set xtics (1, 2, 4, 8, 16, 32, 64, 128, 256, 512)
-set xrange [1:512]
+set xrange [0.9:600]
 set yrange [0:105]
 set key bottom left font ',9'
 plot $right

@@ -219,6 +219,30 @@ TEST_F(MpiRender, ARankThatCannotReadAMeshEndsTheJobWithOneMessageAndNoImage) {
     EXPECT_TRUE(e.path().filename() == "m.lua") << "left behind: " << e.path();
 }
 
+TEST_F(MpiRender, ARankThatReadADifferentSceneIsNamedAndNothingRenders) {
+  // The same script name on two "hosts", one of them edited: rank 0 names rank 1 and the file.
+  write_file(dir_ / "a/tri.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+  write_file(dir_ / "b/tri.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+  write_file(dir_ / "a/m.lua", mesh_scene());
+  std::string edited = mesh_scene();
+  edited.replace(edited.find("0.7, 0.4, 0.2"), 13, "0.2, 0.4, 0.7");
+  write_file(dir_ / "b/m.lua", edited);
+  std::vector<std::string> args = mpirun(1);
+  args.resize(args.size() - 3);
+  const std::string mpi = test::mjray_mpi_binary()->string();
+  args = plus(args, {"-np", "1", "-wdir", (dir_ / "a").string(), mpi, "m.lua", ":", "-np", "1", "-wdir",
+                     (dir_ / "b").string(), mpi, "m.lua"});
+  const auto log = dir_ / "log.txt";
+  EXPECT_NE(run(args, log), 0);
+  const std::string text = read_file(log);
+  EXPECT_EQ(count(text, "mjray: error: "), 1u) << text;
+  EXPECT_NE(text.find("rank 1 ("), std::string::npos) << text;
+  EXPECT_NE(text.find("read a different scene or different files than rank 0"), std::string::npos) << text;
+  EXPECT_NE(text.find("m.lua"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "a/m.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "b/m.png"));
+}
+
 TEST_F(MpiRender, SigintWritesThePartialImageAndResumeUnderMpiFinishesItToTheSameBytes) {
   // Brute force on one thread per rank keeps the render running long enough to interrupt.
   const auto scene = write_file(dir_ / "slow.lua", glass_scene("'slow.png'", 3000, 150, 100));
