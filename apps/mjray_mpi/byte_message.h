@@ -70,6 +70,7 @@ class ByteReader {
  private:
   void copy(void* out, size_t n) {
     if (n > bytes_.size() - offset_) truncated();
+    if (n == 0) return;  // `out` may be an empty vector's null data(): memcpy must not see it
     std::memcpy(out, bytes_.data() + offset_, n);
     offset_ += n;
   }

@@ -44,6 +44,7 @@ class Reader {
   }
   void bytes(void* out, size_t n) {
     if (n > data_.size() - offset_) throw SceneError(path_.string() + ": the resume state file is truncated");
+    if (n == 0) return;  // `out` may be an empty vector's null data(): memcpy must not see it
     std::memcpy(out, data_.data() + offset_, n);
     offset_ += n;
   }
