@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config liblua5.4-dev libpng-dev libjpeg-dev zlib1g-dev libgtest-dev libembree-dev
-          libopenexr-dev ffmpeg)
+          libopenexr-dev ffmpeg openmpi-bin libopenmpi-dev)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -35,7 +35,16 @@ std::string summary_text(const JobStatistics& s) {
                 (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                 s.rays_per_second() / 1e6, (unsigned long long)s.render.pixels_supersampled,
                 s.render.antialias_passes, double(s.peak_rss_bytes) / (1024.0 * 1024.0));
-  return text;
+  std::string summary = text;
+  for (const RankStatistics& r : s.ranks) {
+    std::snprintf(text, sizeof text,
+                  "  rank %-4d %s: load %.3fs, build %.3fs, rendering %.3fs on %d threads, %llu tiles, "
+                  "%llu pixels supersampled, %.2f MB sent\n",
+                  r.rank, r.host.c_str(), r.seconds_load, r.seconds_build, r.seconds_rendering, r.threads,
+                  (unsigned long long)r.tiles, (unsigned long long)r.pixels_supersampled, double(r.bytes_sent) / 1e6);
+    summary += text;
+  }
+  return summary;
 }
 
 std::string frame_line(const JobStatistics& s, const std::string& frame, bool detailed) {
@@ -93,6 +102,23 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
+/// The "ranks" member of a job under MPI: one object per rank.
+std::string ranks_json(const std::vector<RankStatistics>& ranks) {
+  std::string out = ", \"ranks\": [";
+  for (size_t i = 0; i < ranks.size(); ++i) {
+    const RankStatistics& r = ranks[i];
+    char numbers[512];
+    std::snprintf(numbers, sizeof numbers,
+                  "\"rank\": %d, \"threads\": %d, \"seconds_load\": %.6f, \"seconds_build\": %.6f, "
+                  "\"seconds_rendering\": %.6f, \"tiles\": %llu, \"pixels_supersampled\": %llu, \"rays\": %llu, "
+                  "\"bytes_sent\": %llu",
+                  r.rank, r.threads, r.seconds_load, r.seconds_build, r.seconds_rendering, (unsigned long long)r.tiles,
+                  (unsigned long long)r.pixels_supersampled, (unsigned long long)r.rays, (unsigned long long)r.bytes_sent);
+    out += std::string(i ? ", " : "") + "{" + numbers + ", \"host\": " + json_string(r.host) + "}";
+  }
+  return out + "]";
+}
+
 }  // namespace
 
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path) {
@@ -110,7 +136,9 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
                   (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                   s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
                   (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
-    out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers + "}";
+    out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers;
+    if (!s.ranks.empty()) out += ranks_json(s.ranks);
+    out += "}";
     out += i + 1 < jobs.size() ? ",\n" : "\n";
   }
   out += "]\n";

@@ -10,6 +10,20 @@
 
 namespace mjray {
 
+/// What one MPI rank did for a job (mjray-mpi); the job's own figures are the totals.
+struct RankStatistics {
+  int rank = 0;
+  std::string host;
+  int threads = 0;
+  double seconds_load = 0;       ///< running the scene script on this rank
+  double seconds_build = 0;      ///< flattening and building the accelerator on this rank
+  double seconds_rendering = 0;  ///< thread-seconds spent rendering tiles, pixels or frames
+  uint64_t tiles = 0;            ///< first-pass tiles rendered
+  uint64_t pixels_supersampled = 0;
+  uint64_t rays = 0;
+  uint64_t bytes_sent = 0;       ///< message bytes this rank sent for the job
+};
+
 /// Everything the user is told about one render.
 struct JobStatistics {
   std::string image;
@@ -21,6 +35,7 @@ struct JobStatistics {
   int grid_resolution = 0;  ///< voxels per axis of --accel grid; 0 for other accelerators
   RenderStats render;
   uint64_t peak_rss_bytes = 0;
+  std::vector<RankStatistics> ranks;  ///< under MPI: each rank that took part
 
   double seconds_total() const { return seconds_parse + seconds_build + seconds_render; }
   double rays_per_second() const;

@@ -1,66 +1,37 @@
 #include "local_render.h"
 
 #include <cstdio>
-#include <system_error>
 
+#include "job_images.h"
 #include "render_watcher.h"
 #include "mjray/accel/uniform_grid.h"
-#include "mjray/core/error.h"
-#include "mjray/io/image_codec.h"
-#include "mjray/io/image_reader.h"
 #include "mjray/job/job_outputs.h"
-#include "mjray/job/prepared_job.h"
 #include "mjray/render/image_render.h"
-#include "mjray/render/render_checkpoint.h"
 
 namespace mjray {
-
-namespace {
-
-constexpr const char* kFingerprintKey = "mjray job";
-
-/// The fingerprint a finished image records, or "" when it records none.
-std::string recorded_fingerprint(const std::filesystem::path& image) {
-  for (const auto& [key, value] : read_image_metadata(image))
-    if (key == kFingerprintKey) return value;
-  return "";
-}
-
-/// With --resume and a complete image (no state beside it): true when this scene and these
-/// options made it; else throws SceneError saying what differs.
-bool complete_image_matches(const std::filesystem::path& image, const std::string& fingerprint) {
-  const std::string recorded = recorded_fingerprint(image);
-  const std::string advice = "; render without --resume to start again, or remove the image to render just it again";
-  if (recorded.empty())
-    throw SceneError(image.string() + ": --resume keeps a complete image only when it records the scene and options "
-                     "that made it, and this one records none (a partial image whose state file is gone, or not "
-                     "written by mjray)" + advice);
-  if (recorded != fingerprint)
-    throw SceneError(image.string() + ": --resume keeps a complete image only when this scene and these options made "
-                     "it, and a different scene or different options made this one (" +
-                     fingerprint_difference(recorded, fingerprint) + ")" + advice);
-  return true;
-}
-
-}  // namespace
 
 std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
                                                 const JobFingerprints& fingerprints, const LocalRunOptions& run,
                                                 double parse_seconds) {
   // Decide what a resume keeps before building anything.
   const auto image_path = output_path(scene, index, options.outputs);
-  const auto state_path = checkpoint_path(image_path);
   const std::string fingerprint = fingerprints.of(index);
-  std::error_code ec;
-  const bool has_state = run.resume && std::filesystem::exists(state_path, ec);
-  if (run.resume && !has_state && std::filesystem::exists(image_path, ec) && complete_image_matches(image_path, fingerprint)) {
+  ResumePlan plan = plan_resume(image_path, fingerprint, run.resume);
+  if (plan.keep) {
     if (!run.quiet) std::fprintf(stderr, "mjray: kept %s (complete)\n", image_path.string().c_str());
     return std::nullopt;
   }
 
-  // Compute the flat world, its accelerator, the camera and the integrator.
+  // Compute the flat world, its accelerator, the camera and the integrator; then the image.
   const PreparedJob job(scene, index, options);
   for (const auto& w : job.warnings()) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+  JobStatistics stats = prepared_job_statistics(job, parse_seconds);
+  render_prepared_job(job, plan.state, options, fingerprint, run, stats);
+  report_written(stats, run);
+  return stats;
+}
+
+JobStatistics prepared_job_statistics(const PreparedJob& job, double parse_seconds) {
   JobStatistics stats;
   stats.image = job.output().string();
   stats.seconds_parse = parse_seconds;
@@ -68,16 +39,15 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   stats.primitives = job.world().primitive_count();
   stats.accel = std::string(job.accelerator().name());
   if (const auto* grid = dynamic_cast<const UniformGrid*>(&job.accelerator())) stats.grid_resolution = grid->resolution();
+  return stats;
+}
 
-  // Compute the image, resuming from a saved state when there is one.
-  ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render);
-  if (has_state) {
-    const RenderCheckpoint saved = read_checkpoint(state_path);
-    if (saved.fingerprint != fingerprint)
-      throw SceneError(state_path.string() + ": this resume state was saved by a different scene or different options (" +
-                       fingerprint_difference(saved.fingerprint, fingerprint) + "); render without --resume to start again");
-    render.resume_from(saved);
-  }
+void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const JobOptions& options,
+                         const std::string& fingerprint, const LocalRunOptions& run, JobStatistics& stats,
+                         const TileExecutorFactory& executor) {
+  // Compute the image, resuming from the saved state when there is one.
+  ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render, executor);
+  if (state) render.resume_from(*state);
   bool finished = false;
   {
     const PixelRect& traced = render.region();
@@ -90,26 +60,22 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   stats.seconds_render = stats.render.seconds;
 
   if (!finished) {
-    // Keep what is done: the partial image (recording no fingerprint) and the state to resume from.
-    write_image(render.snapshot(), job.output(), options.outputs.encoding);
+    // Keep what is done: the partial image and the state to resume from.
     RenderCheckpoint checkpoint = render.checkpoint();
     checkpoint.fingerprint = fingerprint;
-    write_checkpoint(checkpoint, state_path);
-    std::fprintf(stderr, "mjray: interrupted: wrote the partial image %s and its state; run again with --resume to finish\n",
-                 job.output().string().c_str());
+    write_interrupted_image(checkpoint, job.output(), options.outputs.encoding);
     throw Interrupted{};
   }
-  // The finished image records what made it, so that a later --resume can keep it.
   EncodeOptions encoding = options.outputs.encoding;
-  encoding.metadata.emplace_back(kFingerprintKey, fingerprint);
   encoding.render_seconds = stats.seconds_render;
-  write_image(render.image(), job.output(), encoding);
-  std::filesystem::remove(state_path, ec);
+  write_finished_image(render.image(), job.output(), encoding, fingerprint);
   stats.peak_rss_bytes = peak_rss_bytes();
+}
+
+void report_written(const JobStatistics& stats, const LocalRunOptions& run) {
   if (!run.frame.empty() && (run.print_stats || !run.quiet)) std::fputs(frame_line(stats, run.frame, run.print_stats).c_str(), stderr);
   else if (run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
   else if (!run.quiet) std::fprintf(stderr, "mjray: wrote %s\n", stats.image.c_str());
-  return stats;
 }
 
 }  // namespace mjray

@@ -1,6 +1,7 @@
 #pragma once
-/// Renders one job on this machine as a user at a terminal expects: progress, incremental
-/// images, Ctrl-C keeping the partial image and its state, --resume finishing it.
+/// Renders one job as a user at a terminal expects: progress, incremental images, Ctrl-C
+/// keeping the partial image and its state, --resume finishing it. The tiles run on this
+/// process's threads or on any other TileExecutor a driver gives.
 
 #include <optional>
 #include <string>
@@ -8,6 +9,9 @@
 #include "job_statistics.h"
 #include "mjray/job/job_fingerprint.h"
 #include "mjray/job/job_options.h"
+#include "mjray/job/prepared_job.h"
+#include "mjray/render/render_checkpoint.h"
+#include "mjray/render/tile_executor.h"
 #include "mjray/scene/scene_description.h"
 
 namespace mjray {
@@ -35,5 +39,19 @@ struct Interrupted {};
 std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
                                                 const JobFingerprints& fingerprints, const LocalRunOptions& run,
                                                 double parse_seconds);
+
+/// What is known of a prepared job before it renders: build time, primitives, accelerator.
+JobStatistics prepared_job_statistics(const PreparedJob& job, double parse_seconds);
+
+/// Renders a prepared job, continuing from `state` when given, on the executor that
+/// `executor` makes (this process's threads when empty), watched and interruptible; writes
+/// the finished image, or the partial one and its state and then throws Interrupted. Adds the
+/// render's figures to `stats`. Throws OutputError.
+void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const JobOptions& options,
+                         const std::string& fingerprint, const LocalRunOptions& run, JobStatistics& stats,
+                         const TileExecutorFactory& executor = {});
+
+/// Prints the statistics (--stats) or the "wrote FILE" line (unless quiet).
+void report_written(const JobStatistics& stats, const LocalRunOptions& run);
 
 }  // namespace mjray

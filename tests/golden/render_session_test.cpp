@@ -15,6 +15,7 @@
 #include "mjray/io/image_reader.h"
 #include "mjray/render/image_render.h"
 #include "mjray/render/render_checkpoint.h"
+#include "support/child_process.h"
 #include "support/scene_builder.h"
 #include "support/test_job.h"
 #include "support/scratch_files.h"
@@ -236,53 +237,15 @@ std::string sphere_field(int count, int width, int height, const std::string& ou
 }
 
 /// mjray running in the background with its stderr readable line by line.
-class Child {
+class Child : public test::ChildProcess {
  public:
-  explicit Child(const std::vector<std::string>& args) {
-    int fds[2];
-    EXPECT_EQ(pipe(fds), 0);
-    pid_ = fork();
-    if (pid_ == 0) {
-      dup2(fds[1], 2);
-      close(fds[0]);
-      close(fds[1]);
-      std::vector<char*> argv;
-      const std::string mjray = test::mjray_binary().string();
-      argv.push_back(const_cast<char*>(mjray.c_str()));
-      for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-      argv.push_back(nullptr);
-      execv(mjray.c_str(), argv.data());
-      _exit(127);
-    }
-    close(fds[1]);
-    err_ = fdopen(fds[0], "r");
-  }
-  ~Child() {
-    if (err_) std::fclose(err_);
-  }
-  /// Reads stderr until a line contains `text`; false at the end of the output.
-  bool wait_for(const std::string& text) {
-    char line[4096];
-    while (std::fgets(line, sizeof line, err_)) {
-      log_ += line;
-      if (std::string(line).find(text) != std::string::npos) return true;
-    }
-    return false;
-  }
-  void interrupt() { kill(pid_, SIGINT); }
-  /// Waits for the exit and returns its code (-1 when killed).
-  int exit_code() {
-    wait_for("\x01never");
-    int status = 0;
-    waitpid(pid_, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  const std::string& log() const { return log_; }
+  explicit Child(std::vector<std::string> args) : ChildProcess(with_program(std::move(args))) {}
 
  private:
-  pid_t pid_ = -1;
-  FILE* err_ = nullptr;
-  std::string log_;
+  static std::vector<std::string> with_program(std::vector<std::string> args) {
+    args.insert(args.begin(), test::mjray_binary().string());
+    return args;
+  }
 };
 
 /// pixels_supersampled of the first image in a --stats-json file.

@@ -5,6 +5,7 @@
 
 #include "mjray/core/error.h"
 #include "mjray/render/adaptive_antialiasing.h"
+#include "mjray/render/tile_render.h"
 
 namespace mjray {
 
@@ -31,12 +32,12 @@ PixelRect rendered_region(int width, int height, const RenderSettings& settings)
 }
 
 ImageRender::ImageRender(const Camera& camera, int width, int height, const Integrator& integrator,
-                         const RenderSettings& settings)
+                         const RenderSettings& settings, const TileExecutorFactory& executor)
     : region_(rendered_region(width, height, settings)),
       sampler_(camera, integrator, width, height, settings, region_),
       settings_(settings),
       layout_(layout_of(region_, settings.tile_size)),
-      workers_(sampler_, layout_, settings.threads),
+      workers_(executor ? executor(sampler_, layout_) : std::make_unique<TileRender>(sampler_, layout_, settings.threads)),
       film_(layout_.width, layout_.height),
       supersampled_(size_t(layout_.width) * size_t(layout_.height), 0) {
   const PixelRect crop = settings.crop.value_or(region_);
@@ -86,7 +87,7 @@ bool ImageRender::run_first_pass() {
   std::vector<int> pending;
   for (int t = 0; t < layout_.count(); ++t)
     if (!tile_done_[size_t(t)]) pending.push_back(t);
-  const bool finished = workers_.render_tiles(pending, film_, stop_.get_token(), [&](int tile) {
+  const bool finished = workers_->render_tiles(pending, film_, stop_.get_token(), [&](int tile) {
     tile_done_[size_t(tile)].store(1, std::memory_order_release);
     done_ += uint64_t(layout_.rect(tile).pixel_count()) * first_pass_samples(settings_);
     if (++tiles_finished_ == stop_after_tiles_) stop_.request_stop();
@@ -123,7 +124,7 @@ bool ImageRender::run_antialiasing() {
       plan_index.push_back(k);
     }
     total_ += pass_pixels_.size() * samples_per_pixel;
-    const bool finished = workers_.render_pixels(pending, stop_.get_token(), [&](const SupersampledChunk& chunk) {
+    const bool finished = workers_->render_pixels(pending, stop_.get_token(), [&](const SupersampledChunk& chunk) {
       const size_t first = size_t(chunk.pixels.data() - pending.data());
       std::lock_guard lock(film_mutex_);
       for (size_t k = 0; k < chunk.pixels.size(); ++k) {
@@ -147,7 +148,7 @@ bool ImageRender::run_antialiasing() {
 }
 
 RenderProgress ImageRender::progress() const {
-  return {done_.load(), total_.load(), workers_.rays_published(), antialias_pass_};
+  return {done_.load(), total_.load(), workers_->rays_published(), antialias_pass_};
 }
 
 Image ImageRender::snapshot() const {
@@ -190,8 +191,8 @@ RenderCheckpoint ImageRender::checkpoint() const {
 
 RenderStats ImageRender::stats() const {
   RenderStats s;
-  s.rays = workers_.rays();
-  s.threads = workers_.threads();
+  s.rays = workers_->rays();
+  s.threads = workers_->threads();
   s.pixels_supersampled = pixels_supersampled_;
   s.antialias_passes = antialias_passes_run_;
   s.seconds = seconds_;

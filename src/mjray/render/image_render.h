@@ -17,7 +17,8 @@
 #include "mjray/render/film.h"
 #include "mjray/render/image_sampler.h"
 #include "mjray/render/render_checkpoint.h"
-#include "mjray/render/tile_render.h"
+#include "mjray/render/tile_executor.h"
+#include "mjray/render/tile_layout.h"
 
 namespace mjray {
 
@@ -57,9 +58,10 @@ struct RenderProgress {
 /// snapshot() and checkpoint() may be called from other threads while run() works.
 class ImageRender {
  public:
-  /// The camera and integrator must outlive the render.
+  /// The camera and integrator must outlive the render. The tiles and pixels run on this
+  /// process's settings.threads threads unless `executor` makes another TileExecutor.
   ImageRender(const Camera& camera, int width, int height, const Integrator& integrator,
-              const RenderSettings& settings);
+              const RenderSettings& settings, const TileExecutorFactory& executor = {});
 
   /// Continues from a checkpoint of the same scene and settings (call before run). Throws
   /// SceneError when its size or tiles do not match.
@@ -98,7 +100,7 @@ class ImageRender {
   ImageSampler sampler_;
   RenderSettings settings_;
   TileLayout layout_;
-  TileRender workers_;
+  std::unique_ptr<TileExecutor> workers_;
   Film film_;
   std::unique_ptr<std::atomic<uint8_t>[]> tile_done_;
   std::vector<uint8_t> supersampled_;
