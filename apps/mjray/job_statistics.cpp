@@ -36,8 +36,6 @@ std::string summary_text(const JobStatistics& s) {
   return text;
 }
 
-namespace {
-
 std::string json_string(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
@@ -51,24 +49,25 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
-}  // namespace
+std::string statistics_json(const JobStatistics& s) {
+  char numbers[1024];
+  std::snprintf(numbers, sizeof numbers,
+                "\"seconds_total\": %.6f, \"seconds_parse\": %.6f, \"seconds_build\": %.6f, "
+                "\"seconds_render\": %.6f, \"primitives\": %u, \"threads\": %d, \"rays_primary\": %llu, "
+                "\"rays_secondary\": %llu, \"rays_shadow\": %llu, \"rays_per_second\": %.1f, "
+                "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu",
+                s.seconds_total(), s.seconds_parse, s.seconds_build, s.seconds_render, s.primitives,
+                s.render.threads, (unsigned long long)s.render.rays.primary,
+                (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
+                s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
+                (unsigned long long)s.peak_rss_bytes);
+  return "{\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers + "}";
+}
 
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path) {
   std::string out = "[\n";
   for (size_t i = 0; i < jobs.size(); ++i) {
-    const JobStatistics& s = jobs[i];
-    char numbers[1024];
-    std::snprintf(numbers, sizeof numbers,
-                  "\"seconds_total\": %.6f, \"seconds_parse\": %.6f, \"seconds_build\": %.6f, "
-                  "\"seconds_render\": %.6f, \"primitives\": %u, \"threads\": %d, \"rays_primary\": %llu, "
-                  "\"rays_secondary\": %llu, \"rays_shadow\": %llu, \"rays_per_second\": %.1f, "
-                  "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu",
-                  s.seconds_total(), s.seconds_parse, s.seconds_build, s.seconds_render, s.primitives,
-                  s.render.threads, (unsigned long long)s.render.rays.primary,
-                  (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
-                  s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
-                  (unsigned long long)s.peak_rss_bytes);
-    out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers + "}";
+    out += "  " + statistics_json(jobs[i]);
     out += i + 1 < jobs.size() ? ",\n" : "\n";
   }
   out += "]\n";

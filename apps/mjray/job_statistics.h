@@ -31,6 +31,12 @@ uint64_t peak_rss_bytes();
 /// The one-paragraph summary printed after a render.
 std::string summary_text(const JobStatistics& s);
 
+/// `text` as a JSON string literal, quotes included.
+std::string json_string(const std::string& text);
+
+/// One job's statistics as a JSON object on one line (the elements of write_statistics_json).
+std::string statistics_json(const JobStatistics& s);
+
 /// Writes the list of job statistics as a JSON array of objects. Throws OutputError.
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path);
 

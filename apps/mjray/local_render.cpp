@@ -80,7 +80,7 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   {
     RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding,
                                                  options.render, job.width(), job.height()});
-    finished = render.run();
+    finished = run.run_render ? run.run_render(job, render) : render.run();
     if (finished) watcher.finish();
   }
   stats.render = render.stats();

@@ -2,6 +2,7 @@
 /// Renders one job on this machine as a user at a terminal expects: progress, incremental
 /// images, Ctrl-C keeping the partial image and its state, --resume finishing it.
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -12,6 +13,9 @@
 
 namespace mjray {
 
+class ImageRender;
+class PreparedJob;
+
 /// How the local driver reports and resumes.
 struct LocalRunOptions {
   bool quiet = false;         ///< no progress and no "wrote FILE" line (warnings still print)
@@ -20,6 +24,9 @@ struct LocalRunOptions {
   /// complete image that records this job's fingerprint, render an absent one.
   bool resume = false;
   double snapshot_interval_seconds = 5;
+  /// Runs the built job's render and returns whether it finished; empty = render.run(). The
+  /// watch driver's adds a coarse preview and the live page, and throws to drop a stale render.
+  std::function<bool(const PreparedJob& job, ImageRender& render)> run_render = nullptr;
 };
 
 /// Thrown when the user interrupted a render (the partial image and state are written);

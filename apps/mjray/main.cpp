@@ -12,6 +12,7 @@
 #include "job_statistics.h"
 #include "local_render.h"
 #include "render_watcher.h"
+#include "watch/watch_session.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/lua/scene_loader.h"
 
@@ -45,6 +46,16 @@ int main(int argc, char** argv) {
     return 0;
   }
   for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+
+  // --watch: the live preview's loop renders, again after every change (apps/mjray/watch/).
+  if (cl.watch) {
+    try {
+      return run_watch_session(cl);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mjray: error: %s\n", e.what());
+      return 1;
+    }
+  }
 
   try {
     const auto start = std::chrono::steady_clock::now();

@@ -1,0 +1,275 @@
+// mjray --watch as its user lives it: the page, the image and the statistics served (and
+// nothing else), a new render on every save of the script or of a file it reads, script
+// errors shown with their line while the last good image stays, Ctrl-C, and a final image
+// byte for byte the one `mjray scene.lua` writes.
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <string>
+#include <thread>
+
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include "mjray/io/image_reader.h"
+#include "support/scratch_files.h"
+#include "support/test_paths.h"
+#include "support/watch_run.h"
+
+namespace mjray {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+using std::chrono::seconds;
+
+/// A lit sphere of colour `kd` (a Lua table) over a floor, with an area light: quick, and
+/// every sampling option changes it. `prelude` runs first.
+std::string sphere_scene(const std::string& kd, const std::string& prelude = "", int width = 96, int height = 72) {
+  return prelude +
+         "local root = gr.node('root')\n"
+         "local s = gr.nh_sphere('s', {0, 0, 0}, 1)\n"
+         "s:set_material(gr.glossyreflectivematerial(" + kd + ", {0.5, 0.5, 0.5}, 20, 0.3, 4))\n"
+         "root:add_child(s)\n"
+         "local floor = gr.nh_box('floor', {-6, -2, -6}, 12)\n"
+         "floor:translate(0, -11, 0)\n"
+         "floor:set_material(gr.material({0.6, 0.6, 0.6}, {0, 0, 0}, 1))\n"
+         "root:add_child(floor)\n"
+         "gr.render(root, 'out.png', " + std::to_string(width) + ", " + std::to_string(height) +
+         ", {0, 1, 5}, {0, -0.2, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2},\n"
+         "  {gr.arealight({2, 4, 4}, {0.9, 0.9, 0.9}, {1, 0, 0}, {3, 4, 4}, {2, 4, 5})})\n";
+}
+
+/// The image a PNG's bytes hold, through mjray's reader.
+Image decoded(const std::string& png) {
+  const auto path = test::make_temp_dir("watch-png") / "image.png";
+  test::write_file(path, png);
+  return read_image(path);
+}
+
+int run(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+class GoldenWatch : public test::ScratchFolderTest {
+ protected:
+  /// `mjray --watch --port 0 ARGS scene.lua`, logging to log.txt.
+  std::unique_ptr<test::WatchRun> watch(std::vector<std::string> args = {}) {
+    args.push_back((dir_ / "scene.lua").string());
+    auto run = std::make_unique<test::WatchRun>(args, dir_ / "log.txt");
+    EXPECT_TRUE(run->serving()) << test::read_file(dir_ / "log.txt");
+    return run;
+  }
+};
+
+TEST_F(GoldenWatch, ServesThePageAPngOfTheRightSizeAndTheStatisticsAsJson) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  EXPECT_NE(w->process().log().find("at http://127.0.0.1:"), std::string::npos);
+  const auto done = w->wait_until_done();
+  ASSERT_TRUE(done) << w->process().log();
+  EXPECT_EQ(done->render_id, 1u);
+
+  const auto page = w->http().Get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  EXPECT_NE(page->body.find("<title>mjray live preview</title>"), std::string::npos);
+
+  const std::string png = w->frame_png(1);
+  ASSERT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n");
+  const Image image = decoded(png);
+  EXPECT_EQ(image.width(), 96);
+  EXPECT_EQ(image.height(), 72);
+
+  EXPECT_NE(done->json.find("\"scene\": \"scene.lua\""), std::string::npos) << done->json;
+  EXPECT_NE(done->json.find("\"image\": \"out.png\", \"number\": 1, \"width\": 96, \"height\": 72"), std::string::npos);
+  EXPECT_NE(done->json.find("\"phase\": \"done\", \"statistics\": {\"image\": "), std::string::npos) << done->json;
+  EXPECT_NE(done->json.find("\"rays_primary\": "), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "out.png"));
+
+  // No request reaches a file, not even the scene's own.
+  for (const std::string path : {"/out.png", "/scene.lua", "/log.txt", "/../out.png", "/frame/../scene.lua",
+                                 (dir_ / "scene.lua").string(), "/..%2fscene.lua", "/frame/2.png"}) {
+    const auto res = w->http().Get(path);
+    ASSERT_TRUE(res) << path;
+    EXPECT_EQ(res->status, 404) << path;
+  }
+}
+
+TEST_F(GoldenWatch, SavingTheScriptGivesANewRenderWithinASecondAndADifferentImage) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  const auto first = w->wait_until_done();
+  ASSERT_TRUE(first) << w->process().log();
+  const std::string before = w->frame_png(1), file_before = test::read_file(dir_ / "out.png");
+
+  const auto saved = std::chrono::steady_clock::now();
+  write("scene.lua", sphere_scene("{0.1, 0.3, 0.9}"));
+  const auto next = w->wait_until([&](const auto& s) { return s.render_id > first->render_id; }, seconds(5));
+  ASSERT_TRUE(next) << w->process().log();
+  EXPECT_LT(std::chrono::steady_clock::now() - saved, seconds(1));
+
+  ASSERT_TRUE(w->wait_until_done(first->render_id)) << w->process().log();
+  const std::string after = w->frame_png(1);
+  EXPECT_NE(after, before);
+  EXPECT_GT(decoded(after).at(48, 36).b, decoded(before).at(48, 36).b);  // the sphere turned blue
+  EXPECT_NE(test::read_file(dir_ / "out.png"), file_before);
+}
+
+TEST_F(GoldenWatch, SavingAModuleTheScriptRequiresRendersAgain) {
+  write("colours.lua", "return {sphere = {0.8, 0.2, 0.2}}\n");
+  write("scene.lua", sphere_scene("require('colours').sphere"));
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  const auto first = w->wait_until_done();
+  ASSERT_TRUE(first) << w->process().log();
+  const std::string before = w->frame_png(1);
+  write("colours.lua", "return {sphere = {0.2, 0.9, 0.2}}\n");
+  const auto second = w->wait_until_done(first->render_id, seconds(10));
+  ASSERT_TRUE(second) << w->process().log();
+  EXPECT_NE(w->frame_png(1), before);
+}
+
+TEST_F(GoldenWatch, AScriptErrorIsShownWithItsLineTheLastImageStaysAndAFixBringsTheRenderBack) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  const auto first = w->wait_until_done();
+  ASSERT_TRUE(first) << w->process().log();
+  const std::string good = w->frame_png(1);
+
+  write("scene.lua", "local root = gr.node('root')\n\nlocal s = gr.nh_sphere('s', {0, 0, 0}, 1\nroot:add_child(s)\n");
+  const auto failed = w->wait_until([](const auto& s) { return s.state == "error"; }, seconds(5));
+  ASSERT_TRUE(failed) << w->process().log();
+  EXPECT_NE(failed->error.find("scene.lua:4:"), std::string::npos) << failed->error;
+  EXPECT_EQ(w->frame_png(1), good);
+  EXPECT_TRUE(w->process().running());
+
+  // A runtime error names its line too.
+  write("scene.lua", "local root = gr.node('root')\nroot:no_such_method()\n");
+  const auto runtime = w->wait_until([&](const auto& s) { return s.render_id > failed->render_id && s.state == "error"; },
+                                     seconds(5));
+  ASSERT_TRUE(runtime) << w->process().log();
+  EXPECT_NE(runtime->error.find("scene.lua:2:"), std::string::npos) << runtime->error;
+
+  write("scene.lua", sphere_scene("{0.1, 0.3, 0.9}"));
+  const auto fixed = w->wait_until_done(runtime->render_id, seconds(10));
+  ASSERT_TRUE(fixed) << w->process().log();
+  EXPECT_EQ(fixed->error, "");
+  EXPECT_NE(w->frame_png(1), good);
+}
+
+TEST_F(GoldenWatch, SeveralQuickSavesRenderOnce) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  const auto first = w->wait_until_done();
+  ASSERT_TRUE(first) << w->process().log();
+  for (int i = 0; i < 4; ++i) {
+    write("scene.lua", sphere_scene("{0.1, 0.3, " + std::to_string(0.5 + 0.1 * i) + "}"));
+    std::this_thread::sleep_for(milliseconds(30));
+  }
+  const auto second = w->wait_until_done(first->render_id, seconds(10));
+  ASSERT_TRUE(second) << w->process().log();
+  std::this_thread::sleep_for(milliseconds(600));  // time for another render to start, were one due
+  const auto later = w->status();
+  ASSERT_TRUE(later);
+  EXPECT_EQ(later->render_id, first->render_id + 1);
+}
+
+TEST_F(GoldenWatch, TheFinalImageIsByteIdenticalToANormalRenderWithTheSameOptions) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  const std::vector<std::string> options = {"-a", "2", "-s", "2", "--seed", "7", "-r", "3", "--quiet"};
+  std::string watched, served;
+  {
+    auto w = watch(options);
+    ASSERT_TRUE(w->serving());
+    ASSERT_TRUE(w->wait_until_done()) << w->process().log();
+    served = w->frame_png(1);
+    w->process().signal(SIGINT);
+    EXPECT_EQ(w->process().wait(seconds(10)), 0) << w->process().log();  // Ctrl-C between renders
+    watched = test::read_file(dir_ / "out.png");
+  }
+  fs::remove(dir_ / "out.png");
+  std::string command = "'" + test::mjray_binary().string() + "'";
+  for (const auto& o : options) command += " " + o;
+  ASSERT_EQ(run(command + " '" + (dir_ / "scene.lua").string() + "'"), 0);
+  const std::string normal = test::read_file(dir_ / "out.png");
+  ASSERT_FALSE(normal.empty());
+  EXPECT_EQ(watched, normal);
+  // The page showed the same pixels.
+  const Image page = decoded(served), file = read_image(dir_ / "out.png");
+  ASSERT_EQ(page.pixels().size(), file.pixels().size());
+  for (size_t i = 0; i < file.pixels().size(); ++i) ASSERT_EQ(page.pixels()[i].r, file.pixels()[i].r) << i;
+}
+
+/// Many small spheres, slow to render without an accelerator on one thread.
+std::string slow_scene() {
+  return "local root = gr.node('root')\n"
+         "local m = gr.material({0.7, 0.4, 0.2}, {0.4, 0.4, 0.4}, 30)\n"
+         "for i = 0, 2999 do\n"
+         "  local s = gr.nh_sphere('s' .. i, {(i % 60) * 0.34 - 10, math.floor(i / 60) * 0.24 - 6, -20}, 0.15)\n"
+         "  s:set_material(m)\n"
+         "  root:add_child(s)\n"
+         "end\n"
+         "gr.render(root, 'out.png', 360, 240, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 60, {0.2, 0.2, 0.2},\n"
+         "          {gr.light({5, 5, 10}, {0.8, 0.8, 0.8}, {1, 0, 0})})\n";
+}
+
+TEST_F(GoldenWatch, CtrlCDuringARenderKeepsThePartialImageAndItsStateAndExits130) {
+  write("scene.lua", slow_scene());
+  auto w = watch({"--accel", "none", "-j", "1"});
+  ASSERT_TRUE(w->serving());
+  const auto refining = w->wait_until([](const auto& s) { return s.json.find("\"phase\": \"first pass\"") != std::string::npos; },
+                                      seconds(20));
+  ASSERT_TRUE(refining) << w->process().log();
+  EXPECT_GT(refining->version(1), 0u);  // the coarse image is there
+  w->process().signal(SIGINT);
+  EXPECT_EQ(w->process().wait(seconds(10)), 130) << w->process().log();
+  EXPECT_TRUE(fs::exists(dir_ / "out.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "out.png.mjray-state"));
+  EXPECT_NE(w->process().log().find("interrupted: wrote the partial image"), std::string::npos) << w->process().log();
+}
+
+TEST_F(GoldenWatch, TheShowcaseShowsACoarseImageLongBeforeItsRenderEnds) {
+  auto w = std::make_unique<test::WatchRun>(std::vector<std::string>{"--outdir", dir_.string(), "-s", "3",
+                                                                     (test::source_dir() / "scenes/showcase.lua").string()},
+                                            dir_ / "log.txt");
+  ASSERT_TRUE(w->serving()) << w->process().log();
+  const auto shown = w->wait_until([](const auto& s) { return s.version(1) > 0; }, seconds(10));
+  ASSERT_TRUE(shown) << w->process().log();
+  EXPECT_EQ(shown->state, "rendering");
+  EXPECT_EQ(shown->json.find("\"phase\": \"done\""), std::string::npos);
+  const Image first = decoded(w->frame_png(1));
+  EXPECT_EQ(first.width(), 640);
+  EXPECT_EQ(first.height(), 360);
+  w->process().signal(SIGINT);
+  EXPECT_EQ(w->process().wait(seconds(10)), 130);
+}
+
+TEST_F(GoldenWatch, AnotherAddressIsServedWithAWarningAndBadOptionsExitTwo) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  {
+    test::ChildProcess p({test::mjray_binary().string(), "--watch", "--port", "0", "--listen", "0.0.0.0",
+                          (dir_ / "scene.lua").string()},
+                         dir_ / "listen.txt");
+    EXPECT_NE(p.wait_for_log(std::regex(R"((warning: --listen 0\.0\.0\.0: anyone who can reach)"), seconds(20)), "")
+        << p.log();
+    EXPECT_NE(p.wait_for_log(std::regex(R"(at (http://0\.0\.0\.0:\d+/))"), seconds(5)), "") << p.log();
+    p.signal(SIGINT);
+    p.wait(seconds(10));
+  }
+  const std::string mjray = "'" + test::mjray_binary().string() + "' ";
+  const std::string scene = " '" + (dir_ / "scene.lua").string() + "' 2>/dev/null";
+  EXPECT_EQ(run(mjray + "--port 9000" + scene), 2);
+  EXPECT_EQ(run(mjray + "--watch --listen somewhere" + scene), 2);
+  EXPECT_EQ(run(mjray + "--watch --resume" + scene), 2);
+}
+
+}  // namespace
+}  // namespace mjray
