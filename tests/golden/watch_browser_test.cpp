@@ -3,15 +3,13 @@
 
 #include <chrono>
 #include <csignal>
-#include <cstdlib>
 #include <optional>
 #include <string>
-
-#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
 #include "mjray/io/image_reader.h"
+#include "support/child_process.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 #include "support/watch_run.h"
@@ -65,14 +63,14 @@ TEST(GoldenWatchBrowser, ChromiumShowsTheRenderedImageOnThePage) {
 
   // Load the page as a person would, in a fresh profile, and let its script fetch the image.
   const fs::path screenshot = dir / "screen.png";
-  const std::string command =
-      "'" + browser->string() + "' --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-      "--disable-background-networking --disable-component-update --disable-sync --hide-scrollbars "
-      "--force-device-scale-factor=1 --force-color-profile=srgb --user-data-dir='" + (dir / "profile").string() +
-      "' --window-size=800,600 --virtual-time-budget=4000 --screenshot='" + screenshot.string() + "' '" + w.url() +
-      "' >'" + (dir / "chromium.txt").string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << test::read_file(dir / "chromium.txt");
+  test::ChildProcess chromium_run({browser->string(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                                   "--no-first-run", "--disable-background-networking", "--disable-component-update",
+                                   "--disable-sync", "--hide-scrollbars", "--force-device-scale-factor=1",
+                                   "--force-color-profile=srgb", "--user-data-dir=" + (dir / "profile").string(),
+                                   "--window-size=800,600", "--virtual-time-budget=4000",
+                                   "--screenshot=" + screenshot.string(), w.url()},
+                                  dir / "chromium.txt");
+  EXPECT_EQ(chromium_run.wait(std::chrono::seconds(60)), 0) << chromium_run.log();
   ASSERT_TRUE(fs::exists(screenshot)) << test::read_file(dir / "chromium.txt");
   const Image screen = read_image(screenshot);
   ASSERT_EQ(screen.width(), 800);

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -48,6 +49,9 @@ Image decoded(const std::string& png) {
   test::write_file(path, png);
   return read_image(path);
 }
+
+/// `path` in single quotes, for a shell command.
+std::string quoted(const std::filesystem::path& path) { return std::string("'").append(path.string()).append("'"); }
 
 int run(const std::string& command) {
   const int status = std::system(command.c_str());
@@ -92,8 +96,10 @@ TEST_F(GoldenWatch, ServesThePageAPngOfTheRightSizeAndTheStatisticsAsJson) {
   EXPECT_TRUE(fs::exists(dir_ / "out.png"));
 
   // No request reaches a file, not even the scene's own.
-  for (const std::string path : {"/out.png", "/scene.lua", "/log.txt", "/../out.png", "/frame/../scene.lua",
-                                 (dir_ / "scene.lua").string(), "/..%2fscene.lua", "/frame/2.png"}) {
+  const std::vector<std::string> other_paths = {"/out.png", "/scene.lua", "/log.txt", "/../out.png", "/frame/../scene.lua",
+                                                (dir_ / "scene.lua").string(), "/..%2fscene.lua", "/frame/2.png",
+                                                "/frame/0.png", "/frame/1.png/../../scene.lua", "/stats.json/..", "//etc/passwd"};
+  for (const std::string& path : other_paths) {
     const auto res = w->http().Get(path);
     ASSERT_TRUE(res) << path;
     EXPECT_EQ(res->status, 404) << path;
@@ -196,9 +202,9 @@ TEST_F(GoldenWatch, TheFinalImageIsByteIdenticalToANormalRenderWithTheSameOption
     watched = test::read_file(dir_ / "out.png");
   }
   fs::remove(dir_ / "out.png");
-  std::string command = "'" + test::mjray_binary().string() + "'";
+  std::string command = quoted(test::mjray_binary());
   for (const auto& o : options) command += " " + o;
-  ASSERT_EQ(run(command + " '" + (dir_ / "scene.lua").string() + "'"), 0);
+  ASSERT_EQ(run(command + " " + quoted(dir_ / "scene.lua")), 0);
   const std::string normal = test::read_file(dir_ / "out.png");
   ASSERT_FALSE(normal.empty());
   EXPECT_EQ(watched, normal);
@@ -258,14 +264,14 @@ TEST_F(GoldenWatch, AnotherAddressIsServedWithAWarningAndBadOptionsExitTwo) {
     test::ChildProcess p({test::mjray_binary().string(), "--watch", "--port", "0", "--listen", "0.0.0.0",
                           (dir_ / "scene.lua").string()},
                          dir_ / "listen.txt");
-    EXPECT_NE(p.wait_for_log(std::regex(R"((warning: --listen 0\.0\.0\.0: anyone who can reach)"), seconds(20)), "")
+    EXPECT_NE(p.wait_for_log(std::regex(R"((warning: --listen 0\.0\.0\.0: anyone who can reach))"), seconds(20)), "")
         << p.log();
     EXPECT_NE(p.wait_for_log(std::regex(R"(at (http://0\.0\.0\.0:\d+/))"), seconds(5)), "") << p.log();
     p.signal(SIGINT);
     p.wait(seconds(10));
   }
-  const std::string mjray = "'" + test::mjray_binary().string() + "' ";
-  const std::string scene = " '" + (dir_ / "scene.lua").string() + "' 2>/dev/null";
+  const std::string mjray = quoted(test::mjray_binary()) + " ";
+  const std::string scene = std::string(" ").append(quoted(dir_ / "scene.lua")).append(" 2>/dev/null");
   EXPECT_EQ(run(mjray + "--port 9000" + scene), 2);
   EXPECT_EQ(run(mjray + "--watch --listen somewhere" + scene), 2);
   EXPECT_EQ(run(mjray + "--watch --resume" + scene), 2);

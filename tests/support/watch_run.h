@@ -60,8 +60,8 @@ class WatchRun {
     s.json = res->body;
     std::smatch m;
     if (std::regex_search(s.json, m, std::regex(R"("render_id": (\d+))"))) s.render_id = std::stoull(m[1].str());
-    if (std::regex_search(s.json, m, std::regex(R"("state": "(\w+)")"))) s.state = m[1].str();
-    if (std::regex_search(s.json, m, std::regex(R"("error": "((?:[^"\\]|\\.)*)")"))) s.error = m[1].str();
+    if (std::regex_search(s.json, m, std::regex(R"re("state": "(\w+)")re"))) s.state = m[1].str();
+    if (std::regex_search(s.json, m, std::regex(R"re("error": "((?:[^"\\]|\\.)*)")re"))) s.error = m[1].str();
     return s;
   }
 
