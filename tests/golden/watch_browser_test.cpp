@@ -5,11 +5,13 @@
 #include <csignal>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "mjray/io/image_reader.h"
 #include "support/child_process.h"
+#include "support/chromium_devtools.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 #include "support/watch_run.h"
@@ -42,20 +44,40 @@ std::optional<std::pair<int, int>> find_image(const Image& screen, const Image& 
   return std::nullopt;
 }
 
+/// A checkered sphere in colours `a` and `b` (Lua tables) before a grey background: nothing
+/// else on the page looks like it.
+std::string checkered_sphere(const std::string& a, const std::string& b) {
+  return "local root = gr.node('root')\n"
+         "local m = gr.material({0.8, 0.2, 0.6}, {0.3, 0.3, 0.3}, 20)\n"
+         "m:set_material_texture(gr.checkerboardtexture(" + a + ", " + b + ", 2))\n"
+         "local s = gr.nh_sphere('s', {0, 0, 0}, 1)\n"
+         "s:set_material(m)\n"
+         "root:add_child(s)\n"
+         "gr.render(root, 'out.png', 160, 120, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 50, {0.3, 0.3, 0.3},\n"
+         "  {gr.light({3, 4, 5}, {0.9, 0.9, 0.9}, {1, 0, 0})})\n";
+}
+
+/// Takes screenshots of `page` until one shows `image` (true) or `timeout` passes (false).
+bool wait_until_shown(test::ChromiumPage& page, const Image& image, const fs::path& screenshot,
+                      std::chrono::milliseconds timeout) {
+  const auto end = std::chrono::steady_clock::now() + timeout;
+  while (std::chrono::steady_clock::now() < end) {
+    const std::string png = page.screenshot();
+    if (!png.empty()) {
+      test::write_file(screenshot, png);
+      if (find_image(read_image(screenshot), image)) return true;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return false;
+}
+
 TEST(GoldenWatchBrowser, ChromiumShowsTheRenderedImageOnThePage) {
   const auto browser = chromium();
   ASSERT_TRUE(browser) << "chromium is missing: scripts/setup.sh installs it";
   const auto dir = test::make_temp_dir("watch-browser");
   // A checkered sphere before the sky's gradient: nothing else on the page looks like it.
-  test::write_file(dir / "scene.lua",
-                   "local root = gr.node('root')\n"
-                   "local m = gr.material({0.8, 0.2, 0.6}, {0.3, 0.3, 0.3}, 20)\n"
-                   "m:set_material_texture(gr.checkerboardtexture({0.9, 0.1, 0.5}, {0.2, 0.1, 0.8}, 2))\n"
-                   "local s = gr.nh_sphere('s', {0, 0, 0}, 1)\n"
-                   "s:set_material(m)\n"
-                   "root:add_child(s)\n"
-                   "gr.render(root, 'out.png', 160, 120, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 50, {0.3, 0.3, 0.3},\n"
-                   "  {gr.light({3, 4, 5}, {0.9, 0.9, 0.9}, {1, 0, 0})})\n");
+  test::write_file(dir / "scene.lua", checkered_sphere("{0.9, 0.1, 0.5}", "{0.2, 0.1, 0.8}"));
   test::WatchRun w({"--quiet", (dir / "scene.lua").string()}, dir / "log.txt");
   ASSERT_TRUE(w.serving()) << w.process().log();
   ASSERT_TRUE(w.wait_until_done()) << w.process().log();
@@ -78,6 +100,45 @@ TEST(GoldenWatchBrowser, ChromiumShowsTheRenderedImageOnThePage) {
 
   const auto at = find_image(screen, rendered);
   ASSERT_TRUE(at) << "the screenshot " << screenshot << " does not show the image " << dir / "out.png";
+  w.process().signal(SIGINT);
+  EXPECT_EQ(w.process().wait(std::chrono::seconds(10)), 0);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mjray
+
+namespace mjray {
+namespace {
+
+// The page as it is left open: the browser loads it once, and after a save of the script the
+// page itself (its polling script, no reload) brings the new render's image on screen.
+TEST(GoldenWatchBrowser, AnOpenPageShowsTheNewImageAfterTheScriptIsSaved) {
+  const auto browser = chromium();
+  ASSERT_TRUE(browser) << "chromium is missing: scripts/setup.sh installs it";
+  const auto dir = test::make_temp_dir("watch-browser-live");
+  test::write_file(dir / "scene.lua", checkered_sphere("{0.9, 0.1, 0.5}", "{0.2, 0.1, 0.8}"));
+  test::WatchRun w({"--quiet", (dir / "scene.lua").string()}, dir / "log.txt");
+  ASSERT_TRUE(w.serving()) << w.process().log();
+  const auto first = w.wait_until_done();
+  ASSERT_TRUE(first) << w.process().log();
+  const Image before = read_image(dir / "out.png");
+
+  test::ChromiumPage page(*browser, dir / "profile", dir / "chromium.txt", 800, 600);
+  ASSERT_TRUE(page.ok()) << test::read_file(dir / "chromium.txt");
+  ASSERT_TRUE(page.navigate(w.url()));
+  ASSERT_TRUE(wait_until_shown(page, before, dir / "screen1.png", std::chrono::seconds(60)))
+      << "the page never showed the first image; last screenshot " << dir / "screen1.png";
+
+  // Save other colours: a new render, and the open page follows it.
+  test::write_file(dir / "scene.lua", checkered_sphere("{0.1, 0.8, 0.2}", "{0.9, 0.8, 0.1}"));
+  ASSERT_TRUE(w.wait_until_done(first->render_id, std::chrono::seconds(60))) << w.process().log();
+  const Image after = read_image(dir / "out.png");
+  ASSERT_NE(after.at(80, 60).g, before.at(80, 60).g);
+  ASSERT_TRUE(wait_until_shown(page, after, dir / "screen2.png", std::chrono::seconds(60)))
+      << "the open page never showed the new image; last screenshot " << dir / "screen2.png";
+  EXPECT_FALSE(find_image(read_image(dir / "screen2.png"), before));
+
   w.process().signal(SIGINT);
   EXPECT_EQ(w.process().wait(std::chrono::seconds(10)), 0);
   fs::remove_all(dir);

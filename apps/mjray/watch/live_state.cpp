@@ -1,6 +1,7 @@
 #include "live_state.h"
 
 #include <cstdio>
+#include <filesystem>
 
 #include "mjray/io/png_codec.h"
 
@@ -77,7 +78,11 @@ void LiveState::finish_frame(size_t frame, const JobStatistics& statistics) {
   std::lock_guard lock(mutex_);
   if (frame >= frames_.size()) return;
   frames_[frame].progress = {FramePhase::kDone, 1, 0, statistics.rays_per_second(), 0};
-  frames_[frame].statistics = statistics_json(statistics);
+  // The page names the output by its file name only: where this machine keeps it is none of
+  // a viewer's business (with --listen the viewer may be anyone).
+  JobStatistics shown = statistics;
+  shown.image = std::filesystem::path(shown.image).filename().string();
+  frames_[frame].statistics = statistics_json(shown);
 }
 
 void LiveState::finish_render() {

@@ -53,7 +53,7 @@ TEST(LiveState, ProgressAndStatisticsOfAFrameAreReported) {
   EXPECT_TRUE(has(json, "\"progress\": 0.5000, \"eta_seconds\": 12.0, \"rays_per_second\": 2000000, "
                         "\"antialias_pass\": 2, \"phase\": \"anti-aliasing\""));
   JobStatistics stats;
-  stats.image = "b.png";
+  stats.image = "/home/someone/renders/b.png";  // the page shows the file name only
   stats.primitives = 7;
   page.finish_frame(1, stats);
   page.finish_render();
@@ -61,6 +61,7 @@ TEST(LiveState, ProgressAndStatisticsOfAFrameAreReported) {
   EXPECT_TRUE(has(json, "\"state\": \"done\""));
   EXPECT_TRUE(has(json, "\"phase\": \"done\", \"statistics\": {\"image\": \"b.png\""));
   EXPECT_TRUE(has(json, "\"primitives\": 7"));
+  EXPECT_FALSE(has(json, "/home/someone")) << json;
 }
 
 TEST(LiveState, TheImageIsAPngOfTheFrameAndANewOneHasANewVersion) {
