@@ -141,6 +141,41 @@ TEST_F(GoldenWatch, SavingAModuleTheScriptRequiresRendersAgain) {
   EXPECT_NE(w->frame_png(1), before);
 }
 
+TEST_F(GoldenWatch, SavingAMeshTheScriptReadsRendersAgain) {
+  write("tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  write("scene.lua",
+        "local root = gr.node('root')\n"
+        "local m = gr.mesh('m', 'tri.obj')\n"
+        "m:set_material(gr.material({0.8, 0.6, 0.2}, {0, 0, 0}, 1))\n"
+        "root:add_child(m)\n"
+        "gr.render(root, 'out.png', 64, 48, {0, 0, 4}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2},\n"
+        "  {gr.light({0, 0, 5}, {0.9, 0.9, 0.9}, {1, 0, 0})})\n");
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  const auto first = w->wait_until_done();
+  ASSERT_TRUE(first) << w->process().log();
+  const std::string before = w->frame_png(1);
+  write("tri.obj", "v -1 1 0\nv 0 -1 0\nv 1 1 0\nf 1 2 3\n");  // the triangle upside down
+  const auto second = w->wait_until_done(first->render_id, seconds(10));
+  ASSERT_TRUE(second) << w->process().log();
+  EXPECT_NE(w->frame_png(1), before);
+}
+
+TEST_F(GoldenWatch, AModuleThatFailsOnTheFirstRunIsWatchedAndFixingItRendersTheScene) {
+  write("colours.lua", "return {sphere = {0.8, 0.2, 0.2}\n");  // unclosed: a syntax error on line 2
+  write("scene.lua", sphere_scene("require('colours').sphere"));
+  auto w = watch();
+  ASSERT_TRUE(w->serving());
+  const auto failed = w->wait_until([](const auto& s) { return s.state == "error"; }, seconds(20));
+  ASSERT_TRUE(failed) << w->process().log();
+  EXPECT_NE(failed->error.find("colours.lua:2:"), std::string::npos) << failed->error;
+  write("colours.lua", "return {sphere = {0.8, 0.2, 0.2}}\n");  // only the module is saved
+  const auto fixed = w->wait_until_done(failed->render_id, seconds(10));
+  ASSERT_TRUE(fixed) << w->process().log();
+  EXPECT_EQ(fixed->error, "");
+  EXPECT_FALSE(w->frame_png(1).empty());
+}
+
 TEST_F(GoldenWatch, AScriptErrorIsShownWithItsLineTheLastImageStaysAndAFixBringsTheRenderBack) {
   write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
   auto w = watch();

@@ -31,22 +31,25 @@ enum class RoundEnd { kFinished, kFailed, kStale, kInterrupted };
 
 /// Runs the script with the default Ctrl-C: a script stuck in a loop can then still be
 /// ended, and nothing is lost (nothing renders while it runs).
-SceneDescription load_interruptibly(const CommandLine& cl) {
+SceneDescription load_interruptibly(const CommandLine& cl, std::vector<std::filesystem::path>& inputs_read) {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   struct Reinstall {
     ~Reinstall() { install_interrupt_handlers(); }
   } reinstall;
-  return load_scene(cl.scene, cl.load);
+  SceneLoadOptions load = cl.load;
+  load.inputs_read = &inputs_read;
+  return load_scene(cl.scene, load);
 }
 
 /// One round: run the script, then render and write each frame as `mjray scene.lua` would,
 /// each progressively on the page. The files to watch are updated once the script ran.
 RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveState& page, FileWatcher& files) {
   page.begin_render();
+  std::vector<std::filesystem::path> read;  // what the script read, also when it failed
   try {
     const auto start = std::chrono::steady_clock::now();
-    const SceneDescription scene = load_interruptibly(cl);
+    const SceneDescription scene = load_interruptibly(cl, read);
     const double parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<std::filesystem::path> watched = {cl.scene};
     watched.insert(watched.end(), scene.inputs.begin(), scene.inputs.end());
@@ -82,7 +85,11 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
   } catch (const Interrupted&) {
     return RoundEnd::kInterrupted;
   } catch (const std::exception& e) {
-    // A script or output error: the page shows it and keeps the last good images.
+    // A script or output error: the page shows it and keeps the last good images. A module
+    // or file the script read before it failed is watched too, so that fixing it is seen.
+    std::vector<std::filesystem::path> watched = {cl.scene};
+    watched.insert(watched.end(), read.begin(), read.end());
+    files.watch(watched);
     std::fprintf(stderr, "mjray: error: %s\n", e.what());
     page.fail(e.what());
     return RoundEnd::kFailed;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "mjray/scene/scene_description.h"
 
@@ -37,6 +38,9 @@ struct SceneLoadOptions {
   /// Most Lua VM instructions the script may run (deterministic, for tests and fuzzing);
   /// 0 = no limit.
   uint64_t instruction_limit = 0;
+  /// When set, receives every file the script reads as it reads it (the script itself
+  /// excluded), so that a caller knows them also when the script fails (--watch watches them).
+  std::vector<std::filesystem::path>* inputs_read = nullptr;
 };
 
 /// Runs `script` and collects its gr.render calls. Throws SceneError with "file:line: problem"
