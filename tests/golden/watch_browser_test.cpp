@@ -92,7 +92,7 @@ TEST(GoldenWatchBrowser, ChromiumShowsTheRenderedImageOnThePage) {
                                    "--window-size=800,600", "--virtual-time-budget=4000",
                                    "--screenshot=" + screenshot.string(), w.url()},
                                   dir / "chromium.txt");
-  EXPECT_EQ(chromium_run.wait(std::chrono::seconds(60)), 0) << chromium_run.log();
+  EXPECT_EQ(chromium_run.wait(test::kPatience), 0) << chromium_run.log();
   ASSERT_TRUE(fs::exists(screenshot)) << test::read_file(dir / "chromium.txt");
   const Image screen = read_image(screenshot);
   ASSERT_EQ(screen.width(), 800);
@@ -101,7 +101,7 @@ TEST(GoldenWatchBrowser, ChromiumShowsTheRenderedImageOnThePage) {
   const auto at = find_image(screen, rendered);
   ASSERT_TRUE(at) << "the screenshot " << screenshot << " does not show the image " << dir / "out.png";
   w.process().signal(SIGINT);
-  EXPECT_EQ(w.process().wait(std::chrono::seconds(10)), 0);
+  EXPECT_EQ(w.process().wait(test::kPatience), 0);
   fs::remove_all(dir);
 }
 
@@ -127,20 +127,20 @@ TEST(GoldenWatchBrowser, AnOpenPageShowsTheNewImageAfterTheScriptIsSaved) {
   test::ChromiumPage page(*browser, dir / "profile", dir / "chromium.txt", 800, 600);
   ASSERT_TRUE(page.ok()) << test::read_file(dir / "chromium.txt");
   ASSERT_TRUE(page.navigate(w.url()));
-  ASSERT_TRUE(wait_until_shown(page, before, dir / "screen1.png", std::chrono::seconds(60)))
+  ASSERT_TRUE(wait_until_shown(page, before, dir / "screen1.png", test::kPatience))
       << "the page never showed the first image; last screenshot " << dir / "screen1.png";
 
   // Save other colours: a new render, and the open page follows it.
   test::write_file(dir / "scene.lua", checkered_sphere("{0.1, 0.8, 0.2}", "{0.9, 0.8, 0.1}"));
-  ASSERT_TRUE(w.wait_until_done(first->render_id, std::chrono::seconds(60))) << w.process().log();
+  ASSERT_TRUE(w.wait_until_done(first->render_id, test::kPatience)) << w.process().log();
   const Image after = read_image(dir / "out.png");
   ASSERT_NE(after.at(80, 60).g, before.at(80, 60).g);
-  ASSERT_TRUE(wait_until_shown(page, after, dir / "screen2.png", std::chrono::seconds(60)))
+  ASSERT_TRUE(wait_until_shown(page, after, dir / "screen2.png", test::kPatience))
       << "the open page never showed the new image; last screenshot " << dir / "screen2.png";
   EXPECT_FALSE(find_image(read_image(dir / "screen2.png"), before));
 
   w.process().signal(SIGINT);
-  EXPECT_EQ(w.process().wait(std::chrono::seconds(10)), 0);
+  EXPECT_EQ(w.process().wait(test::kPatience), 0);
   fs::remove_all(dir);
 }
 
