@@ -126,9 +126,10 @@ TEST(GoldenWatchBrowser, AnOpenPageShowsTheNewImageAfterTheScriptIsSaved) {
 
   test::ChromiumPage page(*browser, dir / "profile", dir / "chromium.txt", 800, 600);
   ASSERT_TRUE(page.ok()) << test::read_file(dir / "chromium.txt");
-  ASSERT_TRUE(page.navigate(w.url()));
+  ASSERT_TRUE(page.navigate(w.url())) << test::read_file(dir / "chromium.txt");
   ASSERT_TRUE(wait_until_shown(page, before, dir / "screen1.png", test::kPatience))
-      << "the page never showed the first image; last screenshot " << dir / "screen1.png";
+      << "the page never showed the first image; last screenshot " << dir / "screen1.png" << "\n"
+      << test::read_file(dir / "chromium.txt");
 
   // Save other colours: a new render, and the open page follows it.
   test::write_file(dir / "scene.lua", checkered_sphere("{0.1, 0.8, 0.2}", "{0.9, 0.8, 0.1}"));
@@ -136,11 +137,12 @@ TEST(GoldenWatchBrowser, AnOpenPageShowsTheNewImageAfterTheScriptIsSaved) {
   const Image after = read_image(dir / "out.png");
   ASSERT_NE(after.at(80, 60).g, before.at(80, 60).g);
   ASSERT_TRUE(wait_until_shown(page, after, dir / "screen2.png", test::kPatience))
-      << "the open page never showed the new image; last screenshot " << dir / "screen2.png";
+      << "the open page never showed the new image; last screenshot " << dir / "screen2.png" << "\n"
+      << w.process().log() << test::read_file(dir / "chromium.txt");
   EXPECT_FALSE(find_image(read_image(dir / "screen2.png"), before));
 
   w.process().signal(SIGINT);
-  EXPECT_EQ(w.process().wait(test::kPatience), 0);
+  EXPECT_EQ(w.process().wait(test::kPatience), 0) << w.process().log();
   fs::remove_all(dir);
 }
 
