@@ -12,6 +12,8 @@
 #include <tuple>
 #include <utility>
 
+#include <arpa/inet.h>
+
 namespace mjray {
 
 namespace {
@@ -140,6 +142,12 @@ bool is_video_extension(const std::filesystem::path& path) {
   return extension == ".mp4" || extension == ".webm" || extension == ".gif";
 }
 
+/// A numeric IPv4 or IPv6 address (no host names: --listen says exactly which interface).
+bool is_ip_address(const std::string& text) {
+  unsigned char address[16];
+  return inet_pton(AF_INET, text.c_str(), address) == 1 || inet_pton(AF_INET6, text.c_str(), address) == 1;
+}
+
 #ifdef MJRAY_HAVE_EMBREE
 constexpr const char* kAccelKinds = "bvh (default), grid, none, embree";
 #else
@@ -189,6 +197,11 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--output", [&](auto&, auto& v) { cl.output = v; }},
       {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
       {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},
+      {"--port", [&](auto& o, auto& v) { cl.port = int(parse_integer(o, v, 0, 65535)); }},
+      {"--listen", [&](auto& o, auto& v) {
+         if (!is_ip_address(v)) throw UsageError(o + " expects an IP address such as 127.0.0.1, 0.0.0.0 or ::1, got '" + v + "'");
+         cl.listen = v;
+       }},
       {"--accel", [&](auto& o, auto& v) {
          if (v != "bvh" && v != "grid" && v != "none" && v != "embree")
            throw UsageError(o + " expects bvh, grid, none or embree, got '" + v + "'");
@@ -212,6 +225,7 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--stats", [&] { cl.print_stats = true; }},
       {"--quiet", [&] { cl.quiet = true; }},
       {"--resume", [&] { cl.resume = true; }},
+      {"--watch", [&] { cl.watch = true; }},
       {"--unsafe-lua", [&] { cl.load.unsafe_lua = true; }},
       {"-h", [&] { cl.show_help = true; }},
       {"--help", [&] { cl.show_help = true; }},
@@ -299,6 +313,8 @@ void Parser::parse(const std::vector<std::string>& args) {
     throw UsageError(positional_.empty() ? "no scene file given" : "give exactly one scene file");
   cl_.scene = positional_[0];
   if (cl_.output && cl_.outdir) throw UsageError("--output and --outdir cannot be used together");
+  if (!cl_.watch && (cl_.port || cl_.listen)) throw UsageError(std::string(cl_.port ? "--port" : "--listen") + " needs --watch");
+  if (cl_.watch && cl_.resume) throw UsageError("--watch and --resume cannot be used together (finish the render with --resume first)");
 }
 
 /// Options that change nothing with the others given, each named once.
@@ -365,6 +381,11 @@ options:
   --lua-memory SIZE    most memory the script's Lua state may use, e.g. 512MiB (default 4GiB;
                        0 = no limit)
   --scene-timeout S    stop a script still running after S seconds (default: no limit)
+  --watch              live preview: serve a page showing the render as it refines, and render
+                       again whenever the script or a file it reads changes (Ctrl-C ends it)
+  --port N             the page's port (default )" + std::to_string(kDefaultWatchPort) + R"(, or the next free one; 0 = any free port)
+  --listen ADDR        serve on this address instead of 127.0.0.1 (anyone who can reach it can
+                       see the renders)
   -h, --help           this text
   --version            the version
 

@@ -45,10 +45,17 @@ struct CommandLine {
   int bit_depth = 8;                   // --bit-depth
   int jpeg_quality = 90;               // --jpeg-quality
 
+  // The live preview (apps/mjray/watch/).
+  bool watch = false;                  // --watch
+  std::optional<int> port;             // --port; 0 = any free port; default kDefaultWatchPort
+  std::optional<std::string> listen;   // --listen ADDR; default 127.0.0.1
   bool show_help = false;
   bool show_version = false;
   std::vector<std::string> warnings;   ///< options that change nothing with the others given
 };
+
+/// The port --watch serves on without --port (the next free one when it is taken).
+inline constexpr int kDefaultWatchPort = 8488;
 
 /// Thrown for a bad command line; main prints it with the usage hint and exits 2.
 class UsageError : public std::runtime_error {

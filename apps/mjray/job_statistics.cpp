@@ -87,8 +87,6 @@ std::string animation_summary(const std::vector<JobStatistics>& frames, size_t k
   return head + paragraph.substr(paragraph.find('\n') + 1);
 }
 
-namespace {
-
 std::string json_string(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
@@ -101,6 +99,8 @@ std::string json_string(const std::string& text) {
   }
   return out + "\"";
 }
+
+namespace {
 
 /// The "ranks" member of a job under MPI: one object per rank.
 std::string ranks_json(const std::vector<RankStatistics>& ranks) {
@@ -121,24 +121,27 @@ std::string ranks_json(const std::vector<RankStatistics>& ranks) {
 
 }  // namespace
 
+std::string statistics_json(const JobStatistics& s) {
+  char numbers[1024];
+  std::snprintf(numbers, sizeof numbers,
+                "\"seconds_total\": %.6f, \"seconds_parse\": %.6f, \"seconds_build\": %.6f, "
+                "\"seconds_render\": %.6f, \"primitives\": %u, \"threads\": %d, \"rays_primary\": %llu, "
+                "\"rays_secondary\": %llu, \"rays_shadow\": %llu, \"rays_per_second\": %.1f, "
+                "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu, \"grid_resolution\": %d",
+                s.seconds_total(), s.seconds_parse, s.seconds_build, s.seconds_render, s.primitives,
+                s.render.threads, (unsigned long long)s.render.rays.primary,
+                (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
+                s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
+                (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
+  std::string out = "{\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers;
+  if (!s.ranks.empty()) out += ranks_json(s.ranks);
+  return out + "}";
+}
+
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path) {
   std::string out = "[\n";
   for (size_t i = 0; i < jobs.size(); ++i) {
-    const JobStatistics& s = jobs[i];
-    char numbers[1024];
-    std::snprintf(numbers, sizeof numbers,
-                  "\"seconds_total\": %.6f, \"seconds_parse\": %.6f, \"seconds_build\": %.6f, "
-                  "\"seconds_render\": %.6f, \"primitives\": %u, \"threads\": %d, \"rays_primary\": %llu, "
-                  "\"rays_secondary\": %llu, \"rays_shadow\": %llu, \"rays_per_second\": %.1f, "
-                  "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu, \"grid_resolution\": %d",
-                  s.seconds_total(), s.seconds_parse, s.seconds_build, s.seconds_render, s.primitives,
-                  s.render.threads, (unsigned long long)s.render.rays.primary,
-                  (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
-                  s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
-                  (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
-    out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers;
-    if (!s.ranks.empty()) out += ranks_json(s.ranks);
-    out += "}";
+    out += "  " + statistics_json(jobs[i]);
     out += i + 1 < jobs.size() ? ",\n" : "\n";
   }
   out += "]\n";

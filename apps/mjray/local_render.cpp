@@ -53,7 +53,7 @@ void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheck
     const PixelRect& traced = render.region();
     RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding,
                                                  options.render, traced.x1 - traced.x0, traced.y1 - traced.y0, run.frame});
-    finished = render.run();
+    finished = run.run_render ? run.run_render(job, render) : render.run();
     if (finished) watcher.finish();
   }
   stats.render = render.stats();

@@ -3,6 +3,7 @@
 /// keeping the partial image and its state, --resume finishing it. The tiles run on this
 /// process's threads or on any other TileExecutor a driver gives.
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -16,6 +17,9 @@
 
 namespace mjray {
 
+class ImageRender;
+class PreparedJob;
+
 /// How the local driver reports and resumes.
 struct LocalRunOptions {
   bool quiet = false;         ///< no progress and no "wrote FILE" line (warnings still print)
@@ -27,6 +31,9 @@ struct LocalRunOptions {
   /// "frame 7/24" when the scene renders several images: shown with the progress, and the
   /// statistics shrink to one line (the caller prints their sum at the end).
   std::string frame;
+  /// Runs the built job's render and returns whether it finished; empty = render.run(). The
+  /// watch driver's adds a coarse preview and the live page, and throws to drop a stale render.
+  std::function<bool(const PreparedJob& job, ImageRender& render)> run_render = nullptr;
 };
 
 /// Thrown when the user interrupted a render (the partial image and state are written);

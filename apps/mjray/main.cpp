@@ -14,6 +14,7 @@
 #include "local_render.h"
 #include "render_watcher.h"
 #include "video_encoder.h"
+#include "watch/watch_session.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/job/job_view.h"
 #include "mjray/lua/scene_loader.h"
@@ -64,6 +65,16 @@ int main(int argc, char** argv) {
     return 0;
   }
   for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+
+  // --watch: the live preview's loop renders, again after every change (apps/mjray/watch/).
+  if (cl.watch) {
+    try {
+      return run_watch_session(cl);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mjray: error: %s\n", e.what());
+      return 1;
+    }
+  }
 
   try {
     const auto start = std::chrono::steady_clock::now();

@@ -56,7 +56,9 @@ FileLocation caller_location(lua_State* L) {
 }
 
 void record_input(lua_State* L, const std::filesystem::path& path) {
-  context(L).description->inputs.push_back(path);
+  LoaderContext& ctx = context(L);
+  ctx.description->inputs.push_back(path);
+  if (ctx.options.inputs_read) ctx.options.inputs_read->push_back(path);
 }
 
 void add_warning(lua_State* L, const std::string& text) {

@@ -42,6 +42,9 @@ struct SceneLoadOptions {
   /// -D NAME=VALUE: globals set before the script runs, numbers where Lua reads VALUE as one
   /// ("7", "0.25", "1e3"), else strings. Names must be Lua identifiers that name no global yet.
   std::vector<std::pair<std::string, std::string>> defines;
+  /// When set, receives every file the script reads as it reads it (the script itself
+  /// excluded), so that a caller knows them also when the script fails (--watch watches them).
+  std::vector<std::filesystem::path>* inputs_read = nullptr;
 };
 
 /// Runs `script` and collects its gr.render calls. Throws SceneError with "file:line: problem"

@@ -165,13 +165,18 @@ Image ImageRender::snapshot() const {
   return windowed(copy);
 }
 
+std::vector<uint8_t> ImageRender::finished_tiles() const {
+  std::vector<uint8_t> finished(size_t(layout_.count()));
+  for (int t = 0; t < layout_.count(); ++t) finished[size_t(t)] = tile_done_[size_t(t)].load(std::memory_order_acquire);
+  return finished;
+}
+
 RenderCheckpoint ImageRender::checkpoint() const {
   std::lock_guard lock(film_mutex_);
   RenderCheckpoint c;
   c.tile_size = layout_.tile_size;
   c.antialias_pass = antialias_pass_;
-  c.tile_done.resize(size_t(layout_.count()));
-  for (int t = 0; t < layout_.count(); ++t) c.tile_done[size_t(t)] = tile_done_[size_t(t)].load(std::memory_order_acquire);
+  c.tile_done = finished_tiles();
   c.supersampled = supersampled_;
   c.pass_pixels = pass_pixels_;
   c.pass_done = pass_done_;

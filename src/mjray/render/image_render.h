@@ -76,6 +76,10 @@ class ImageRender {
   RenderProgress progress() const;
   /// The finished part of the image, or of its crop window (unfinished tiles are black).
   Image snapshot() const;
+  /// Per tile of layout(), whether its first pass is finished (any thread). A tile finished in
+  /// this answer is finished in a snapshot() taken after it.
+  std::vector<uint8_t> finished_tiles() const;
+  const TileLayout& layout() const { return layout_; }
   /// The state to resume from after run() returned false.
   RenderCheckpoint checkpoint() const;
   /// The image, or its crop window (after run() returned true).
