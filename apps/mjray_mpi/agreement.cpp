@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <optional>
 
-#include "byte_message.h"
+#include "mjray/core/byte_buffer.h"
 #include "mjray/job/job_fingerprint.h"
 
 namespace mjray {
@@ -29,7 +29,7 @@ std::vector<std::string> agree_on_load(MpiWorld& world, double load_seconds, con
   // On rank 0: group the ranks by their error, in rank order.
   std::vector<std::pair<std::string, std::vector<int>>> errors;
   for (size_t k = 0; k < all.size(); ++k) {
-    ByteReader r(all[k]);
+    ByteReader r(all[k], "a message between ranks");
     RankStatistics rank;
     rank.rank = int(k);
     rank.host = r.get_string();

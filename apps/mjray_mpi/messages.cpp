@@ -1,8 +1,8 @@
 #include "messages.h"
+#include "mjray/core/byte_buffer.h"
 
 #include <stdexcept>
 
-#include "byte_message.h"
 
 namespace mjray {
 
@@ -17,7 +17,7 @@ ByteWriter start(MessageType type) {
 /// A reader past the type byte, which must be `type`.
 ByteReader reader_of(const std::string& bytes, MessageType type) {
   if (type_of(bytes) != type) throw std::runtime_error("a message between ranks has an unexpected type");
-  ByteReader r(bytes);
+  ByteReader r(bytes, "a message between ranks");
   r.get<MessageType>();
   return r;
 }

@@ -1,12 +1,14 @@
 #pragma once
-/// Building and reading the bytes of a message: fixed-size values and length-prefixed runs,
-/// in the sender's byte order (every rank runs the same binary on the same kind of machine).
+/// Building and reading byte strings: fixed-size values and length-prefixed runs in this
+/// machine's byte order (resume states, and messages between ranks that run the same binary
+/// on the same kind of machine).
 
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace mjray {
@@ -33,16 +35,28 @@ class ByteWriter {
     bytes_ += text;
     return *this;
   }
+  /// `n` bytes as they are, with no count.
+  ByteWriter& put_bytes(const void* data, size_t n) {
+    bytes_.append(static_cast<const char*>(data), n);
+    return *this;
+  }
   std::string take() { return std::move(bytes_); }
 
  private:
   std::string bytes_;
 };
 
-/// Reads what a ByteWriter wrote, in the same order; throws std::runtime_error past the end.
+/// Thrown by ByteReader when the bytes end before what they should hold.
+struct TruncatedBytes : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Reads what a ByteWriter wrote, in the same order; throws TruncatedBytes ("WHAT was cut
+/// short") past the end.
 class ByteReader {
  public:
-  explicit ByteReader(const std::string& bytes) : bytes_(bytes) {}
+  explicit ByteReader(const std::string& bytes, std::string what = "a byte string")
+      : bytes_(bytes), what_(std::move(what)) {}
 
   template <class T>
   T get() {
@@ -59,6 +73,9 @@ class ByteReader {
     copy(values.data(), count * sizeof(T));
     return values;
   }
+  /// `n` bytes as they are (what put_bytes wrote).
+  void get_bytes(void* out, size_t n) { copy(out, n); }
+  bool at_end() const { return offset_ == bytes_.size(); }
   std::string get_string() {
     const auto count = get<uint64_t>();
     if (count > bytes_.size() - offset_) truncated();
@@ -74,9 +91,10 @@ class ByteReader {
     std::memcpy(out, bytes_.data() + offset_, n);
     offset_ += n;
   }
-  [[noreturn]] static void truncated() { throw std::runtime_error("a message between ranks was cut short"); }
+  [[noreturn]] void truncated() const { throw TruncatedBytes(what_ + " was cut short"); }
 
   const std::string& bytes_;
+  std::string what_;
   size_t offset_ = 0;
 };
 
