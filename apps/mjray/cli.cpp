@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <functional>
@@ -41,6 +42,15 @@ size_t parse_bytes(const std::string& option, const std::string& text) {
   return size_t(bytes);
 }
 
+/// A photon count: a whole number written plainly or in exponent form ("1e6"), 0 to 10⁹.
+uint64_t parse_photon_count(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value >= 0 && value <= 1e9) || value != std::floor(value))
+    throw UsageError(option + " expects a number of photons from 0 to 1e9 (e.g. 200000 or 1e6), got '" + text + "'");
+  return uint64_t(value);
+}
+
 }  // namespace
 
 std::string usage_text() {
@@ -67,6 +77,8 @@ options:
   --transform-order pre|post|auto
                        how node transforms compose (default auto: post for scripts that
                        build table-form meshes, as the old course skeleton, else pre)
+  --caustics N         photon-mapped caustics from N photons (e.g. 1e6; default 0: off)
+  --gi N               global illumination: N photons and final gathering (default 0: off)
   --quiet              no progress output
   --resume             continue an interrupted render
   --unsafe-lua         give the script the full Lua standard library
@@ -96,6 +108,8 @@ JobOptions job_options(const CommandLine& cl) {
   o.render.seed = cl.seed;
   o.render.antialias_samples = cl.antialias_samples;
   o.render.antialias_threshold = cl.antialias_threshold;
+  o.photons.caustic_photons = cl.caustic_photons;
+  o.photons.global_photons = cl.global_photons;
   o.outputs.output = cl.output;
   o.outputs.outdir = cl.outdir;
   o.outputs.encoding.gamma = cl.srgb ? OutputGamma::kSrgb : OutputGamma::kLinear;
@@ -129,6 +143,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
            throw UsageError(o + " expects a number of seconds from 0 to 1000000, got '" + v + "'");
          cl.load.timeout_seconds = t;
        }},
+      {"--caustics", [&](auto& o, auto& v) { cl.caustic_photons = parse_photon_count(o, v); }},
+      {"--gi", [&](auto& o, auto& v) { cl.global_photons = parse_photon_count(o, v); }},
       {"--output", [&](auto&, auto& v) { cl.output = v; }},
       {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
       {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},

@@ -32,6 +32,9 @@ struct CommandLine {
   bool resume = false;
   bool srgb = false;                   // --gamma srgb
   SceneLoadOptions load;
+  // Photon mapping: photons emitted, 0 = off.
+  uint64_t caustic_photons = 0;        // --caustics
+  uint64_t global_photons = 0;         // --gi
   bool show_help = false;
   bool show_version = false;
 };

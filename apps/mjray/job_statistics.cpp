@@ -20,6 +20,46 @@ uint64_t peak_rss_bytes() {
   return uint64_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
+namespace {
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+/// The summary's photon lines, or nothing without photon maps.
+std::string photon_text(const JobStatistics& s) {
+  if (!s.photons) return "";
+  const PhotonStatistics& p = *s.photons;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "  photons   caustic %llu emitted, %llu stored; global %llu emitted, %llu stored, %llu irradiance "
+                "samples; %.1f MiB\n"
+                "  photon pass %.3fs: trace %.3fs (%llu rays), kd-trees %.3fs, irradiance %.3fs\n",
+                (unsigned long long)p.caustic_emitted, (unsigned long long)p.caustic_stored,
+                (unsigned long long)p.global_emitted, (unsigned long long)p.global_stored,
+                (unsigned long long)p.irradiance_samples, double(p.memory_bytes) / kMiB, p.seconds(), p.seconds_trace,
+                (unsigned long long)p.rays, p.seconds_build, p.seconds_irradiance);
+  return text;
+}
+
+/// The photon fields of a job's JSON object (with a leading comma), or nothing.
+std::string photon_json(const JobStatistics& s) {
+  if (!s.photons) return "";
+  const PhotonStatistics& p = *s.photons;
+  char text[768];
+  std::snprintf(text, sizeof text,
+                ", \"photons_caustic_emitted\": %llu, \"photons_caustic_stored\": %llu, "
+                "\"photons_global_emitted\": %llu, \"photons_global_stored\": %llu, "
+                "\"photon_irradiance_samples\": %llu, \"photon_rays\": %llu, \"seconds_photons\": %.6f, "
+                "\"seconds_photon_trace\": %.6f, \"seconds_photon_build\": %.6f, "
+                "\"seconds_photon_irradiance\": %.6f, \"photon_map_bytes\": %llu",
+                (unsigned long long)p.caustic_emitted, (unsigned long long)p.caustic_stored,
+                (unsigned long long)p.global_emitted, (unsigned long long)p.global_stored,
+                (unsigned long long)p.irradiance_samples, (unsigned long long)p.rays, p.seconds(), p.seconds_trace,
+                p.seconds_build, p.seconds_irradiance, (unsigned long long)p.memory_bytes);
+  return text;
+}
+
+}  // namespace
+
 std::string summary_text(const JobStatistics& s) {
   char text[1024];
   std::snprintf(text, sizeof text,
@@ -32,8 +72,8 @@ std::string summary_text(const JobStatistics& s) {
                 s.seconds_render, s.render.threads, (unsigned long long)s.render.rays.primary,
                 (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                 s.rays_per_second() / 1e6, (unsigned long long)s.render.pixels_supersampled,
-                s.render.antialias_passes, double(s.peak_rss_bytes) / (1024.0 * 1024.0));
-  return text;
+                s.render.antialias_passes, double(s.peak_rss_bytes) / kMiB);
+  return text + photon_text(s);
 }
 
 namespace {
@@ -68,7 +108,8 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
                   (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                   s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
                   (unsigned long long)s.peak_rss_bytes);
-    out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers + "}";
+    out += "  {\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers +
+           photon_json(s) + "}";
     out += i + 1 < jobs.size() ? ",\n" : "\n";
   }
   out += "]\n";

@@ -3,9 +3,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "mjray/integrator/photon/photon_statistics.h"
 #include "mjray/render/image_render.h"
 
 namespace mjray {
@@ -20,8 +22,10 @@ struct JobStatistics {
   std::string accel;
   RenderStats render;
   uint64_t peak_rss_bytes = 0;
+  std::optional<PhotonStatistics> photons;  ///< with --caustics or --gi
 
-  double seconds_total() const { return seconds_parse + seconds_build + seconds_render; }
+  double seconds_photons() const { return photons ? photons->seconds() : 0; }
+  double seconds_total() const { return seconds_parse + seconds_build + seconds_photons() + seconds_render; }
   double rays_per_second() const;
 };
 

@@ -24,6 +24,7 @@ JobStatistics render_job_locally(const SceneDescription& scene, size_t index, co
   stats.seconds_build = job.build_seconds();
   stats.primitives = job.world().primitive_count();
   stats.accel = std::string(job.accelerator().name());
+  if (job.photon_statistics()) stats.photons = *job.photon_statistics();
 
   // Compute the image, resuming from a saved state when asked.
   ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render);

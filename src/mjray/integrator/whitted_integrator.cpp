@@ -28,7 +28,14 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random
   // The specular lobes draw their samples first, then direct light: the order is part of
   // the image.
   const Color specular = specular_light(si, frame, specular_lobes(material, frame), depth, random, counters);
-  return direct_light(si, frame, local, random, counters) + specular;
+  return surface_light(si, frame, local, depth.weight, random, counters) + specular;
+}
+
+Color WhittedIntegrator::surface_light(const SurfaceInteraction& si, const ShadingFrame& frame,
+                                       const LocalShading& local, float weight, RandomStream& random,
+                                       RayCounters& counters) const {
+  const Color direct = direct_light(si, frame, local, random, counters);
+  return indirect_ ? direct + indirect_->radiance(si, frame, local, weight, random, counters) : direct;
 }
 
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const ShadingFrame& frame,
@@ -67,7 +74,7 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   if (n_dot_l <= 0) return {};  // the light is behind the surface
   ++counters.shadow;
   const Ray shadow = spawn_ray_to(si, sample.position);
-  if (!world_.primitives.any_transmissive()) {
+  if (!world_.primitives.any_transmissive() || !settings_.transmissive_shadows) {
     if (accel_.occluded(shadow, kShadowTMax)) return {};
     return local.phong(frame, l, n_dot_l) * sample.intensity;
   }
@@ -125,7 +132,8 @@ Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const 
     const Material& material = world_.materials[found->material];
     const Vector3 wo = normalize(-direction);
     const ShadingFrame frame{wo, face_forward(found->shading_normal, wo), found->geometric_normal};
-    result += kept * direct_light(*found, frame, local_shading(material, *found), random, counters);
+    result += kept * surface_light(*found, frame, local_shading(material, *found), weight * kept.max_component(),
+                                   random, counters);
     if (!transmissive(material)) break;
     kept = kept * shadow_transmittance(material, frame);
     from = *found;

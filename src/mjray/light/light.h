@@ -5,8 +5,9 @@
 ///   - `int samples_per_axis(int requested)`: how many samples along each axis of the -s
 ///     grid it needs (1 for a point);
 ///   - `LightSample sample_li(receiver, u)`: the point at u ∈ [0,1)² and the light from it;
-///   - `EmittedRay sample_le(u_position, u_direction)` and `Color power()`: emission, for
-///     transports that start at lights.
+///   - `EmittedRay sample_le(u_position, u_direction)`, `EmissionPoint emission_point(u)` and
+///     `Color power()`: emission, for transports that start at lights;
+///   - `float attenuation(float d)`: the falloff 1 / (c0 + c1·d + c2·d²) at distance d.
 /// The functions below dispatch with std::visit, so a light missing one does not compile.
 /// To add a light: write the struct, add it to `Light`, bind it in `lua/gr_bindings.cpp` or
 /// `lua/extension_bindings.cpp`, and test it in `tests/unit/light/`.
@@ -28,6 +29,12 @@ inline LightSample sample_li(const Light& light, const Point3& receiver, Point2 
 }
 inline EmittedRay sample_le(const Light& light, Point2 u_position, Point2 u_direction) {
   return std::visit([&](const auto& l) { return l.sample_le(u_position, u_direction); }, light);
+}
+inline EmissionPoint emission_point(const Light& light, Point2 u) {
+  return std::visit([&](const auto& l) { return l.emission_point(u); }, light);
+}
+inline float attenuation(const Light& light, float d) {
+  return std::visit([&](const auto& l) { return l.attenuation(d); }, light);
 }
 inline Color power(const Light& light) {
   return std::visit([](const auto& l) { return l.power(); }, light);
