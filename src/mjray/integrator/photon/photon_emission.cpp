@@ -39,15 +39,23 @@ struct Cone {
   }
 };
 
-/// A ball around a unit shape placed by world_from_object: its centre mapped, its radius
-/// stretched by the map's largest singular value (bounded by Gershgorin's circles on AᵀA).
-BoundingSphere world_ball(const BoundingSphere& object, const Transform& world_from_object) {
+/// A ball around a unit shape placed by world_from_object, about its ball's mapped centre:
+/// the smaller of two bounds, its ball's radius stretched by the map's largest singular value
+/// (bounded by Gershgorin's circles on AᵀA; exact for a sphere under rotation and uniform
+/// scale) and the farthest mapped corner of its box (exact for a box).
+BoundingSphere world_ball(const BoundingSphere& object, const Bounds3& object_box, const Transform& world_from_object) {
   const Vector3 a[3] = {world_from_object(Vector3(1, 0, 0)), world_from_object(Vector3(0, 1, 0)),
                         world_from_object(Vector3(0, 0, 1))};
   float stretch2 = 0;
   for (const Vector3& row : a)
     stretch2 = std::max(stretch2, std::abs(dot(row, a[0])) + std::abs(dot(row, a[1])) + std::abs(dot(row, a[2])));
-  return {world_from_object(object.centre), object.radius * std::sqrt(stretch2) * 1.0001f};
+  const Point3 centre = world_from_object(object.centre);
+  float corner2 = 0;
+  for (int i = 0; i < 8; ++i) {
+    const Vector3 d = world_from_object(object_box.corner(i)) - centre;
+    corner2 = std::max(corner2, dot(d, d));
+  }
+  return {centre, std::min(object.radius * std::sqrt(stretch2), std::sqrt(corner2)) * 1.0001f};
 }
 
 /// The mean of a colour's channels: how much a light's photons weigh in the choice.
@@ -76,7 +84,8 @@ std::vector<BoundingSphere> specular_targets(const World& world) {
     if (!specular(world.materials[world.shapes[i].material])) continue;
     const ShapeInstance& instance = world.primitives.shape(first_shape + uint32_t(i));
     const BoundingSphere object = std::visit([](const auto& s) { return s.object_bounding_sphere(); }, instance.shape);
-    balls.push_back(world_ball(object, world.shapes[i].world_from_object));
+    const Bounds3 box = std::visit([](const auto& s) { return s.object_bounds(); }, instance.shape);
+    balls.push_back(world_ball(object, box, world.shapes[i].world_from_object));
     all.expand(instance.world_bounds);
   }
   if (balls.size() > kMaxTargets) return {{all.centre(), length(all.diagonal()) * 0.5f * 1.0001f}};
