@@ -44,7 +44,11 @@ TEST(KdTree, NearestNeighboursAreThoseOfABruteForceSearch) {
   RandomStream random(2, 0, 0);
   std::vector<Neighbour> out(50);
   for (int q = 0; q < 200; ++q) {
-    const Point3 p{random.uniform() * 4 - 2, random.uniform() * 0.2f, random.uniform() * 4 - 2};
+    Point3 p{random.uniform() * 4 - 2, random.uniform() * 0.2f, random.uniform() * 4 - 2};
+    // Some on the photons' plane and on the tree's first splitting planes (about x, z = 0).
+    if (q % 3 == 0) p.y = 0;
+    if (q % 5 == 0) p.x = 0;
+    if (q % 7 == 0) p.z = 0;
     const Normal3 up{0, 1, 0};
     const float max_distance = q % 2 ? 0.1f : 10.f;
     const auto accept = [&](const Photon& photon) { return faces_alike(photon.normal, up); };
