@@ -29,12 +29,15 @@ Color PhotonMappedLight::final_gather(const SurfaceInteraction& si, const Shadin
                                       RandomStream& random, RayCounters& counters) const {
   const LocalShading brdf = scattering(world_.materials[si.material], si);
   if (brdf.kd.is_black() && brdf.ks.is_black()) return {};
-  const int rays = std::max(1, int(std::ceil(float(settings_.gather_rays) * std::clamp(weight, 0.f, 1.f))));
+  // An m×m jittered grid of rays (m² about gather_rays × weight); u1 also splits the rays
+  // between the BRDF's two parts in proportion.
+  const float wanted = float(settings_.gather_rays) * std::clamp(weight, 0.f, 1.f);
+  const int m = std::max(1, int(std::lround(std::sqrt(wanted))));
+  const int rays = m * m;
   Color sum;
   for (int k = 0; k < rays; ++k) {
-    // Stratified in u1, which also splits the rays between the BRDF's two parts.
-    const float u1 = (float(k) + random.uniform()) / float(rays);
-    const float u2 = random.uniform();
+    const float u1 = (float(k % m) + random.uniform()) / float(m);
+    const float u2 = (float(k / m) + random.uniform()) / float(m);
     const auto sample = brdf.sample(frame, u1, u2);
     // Nothing arrives from inside the surface (where a shading normal may point a ray).
     if (!sample || dot(sample->wi, frame.geometric_normal) * dot(frame.wo, frame.geometric_normal) <= 0) continue;

@@ -9,10 +9,10 @@ namespace mjray {
 struct PhotonSettings {
   uint64_t caustic_photons = 0;  ///< --caustics N: photons aimed at objects with specular lobes
   uint64_t global_photons = 0;   ///< --gi N: photons in every direction, for the global map
-  int caustic_neighbours = 64;   ///< k of the caustic map's density estimate
+  int caustic_neighbours = 100;  ///< k of the caustic map's density estimate
   int global_neighbours = 100;   ///< k of the global map's irradiance estimates
   int irradiance_stride = 4;     ///< irradiance is precomputed at every N-th global photon
-  int gather_rays = 64;          ///< final-gather rays at a surface seen from the camera
+  int gather_rays = 64;          ///< final-gather rays at a surface seen from the camera (a square grid)
   /// The estimates' largest radius: for caustics a share of the diagonal of the box around
   /// the objects photons are aimed at, for the global map of the box around its photons.
   float caustic_radius_share = 0.02f;
