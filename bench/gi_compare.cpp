@@ -62,8 +62,7 @@ class PathTracedLight final : public IndirectLight {
       const auto hit = closest_surface(world_, accel_, ray);
       if (!hit) break;
       const Material& material = world_.materials[hit->material];
-      const Vector3 wo = normalize(-ray.direction);
-      const ShadingFrame frame{wo, face_forward(hit->shading_normal, wo), hit->geometric_normal};
+      const ShadingFrame frame = frame_facing(*hit, ray.direction);
       const LocalShading brdf = scattering(material, *hit);
       for (const Light& light : world_.lights) {
         const LightSample ls = sample_li(light, hit->point, {random.uniform(), random.uniform()});

@@ -154,6 +154,28 @@ void print(const char* what, const char* structure, double cell, size_t items, s
               what, structure, cell, items, queries, t.build, double(queries) / t.seconds, t.checksum);
 }
 
+/// Times the k-nearest queries on a kd-tree rebuilt from `tree`'s items and on a hashed grid
+/// for each cell size (`cells` × `unit`), printing a line for each.
+template <class Item, class Value>
+void compare(const char* what, const KdTree<Item>& tree, const std::vector<Query>& queries, int k, float radius,
+             float unit, const std::vector<float>& cells, int repeat, Value value) {
+  const std::vector<Item> items(tree.items().begin(), tree.items().end());
+  auto start = Clock::now();
+  const KdTree<Item> rebuilt(items, 1);
+  const double build = seconds_since(start);
+  Timing t = time_queries(repeat, [&] { return sum_nearest(rebuilt, queries, k, radius, value); });
+  t.build = build;
+  print(what, "kd-tree", 0, items.size(), queries.size(), t);
+  for (const float f : cells) {
+    start = Clock::now();
+    const HashGrid<Item> grid(items, unit * f);
+    const double grid_build = seconds_since(start);
+    Timing g = time_queries(repeat, [&] { return sum_nearest(grid, queries, k, radius, value); });
+    g.build = grid_build;
+    print(what, "grid", f, items.size(), queries.size(), g);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -197,44 +219,15 @@ int main(int argc, char** argv) {
   // The photon maps again, owned here, to build every structure over the same items.
   const PhotonMaps own(world, job.accelerator(), options.photons, 0, 1);
   if (caustics) {
-    const KdTree<Photon>& tree = own.caustic();
-    const float radius = own.caustic_query().max_radius;
-    const auto power = [](const Photon& p) { return double(p.power.g); };
-    std::vector<Photon> photons(tree.items().begin(), tree.items().end());
-    auto start = Clock::now();
-    const KdTree<Photon> rebuilt(photons, 1);
-    Timing t = time_queries(repeat, [&] { return sum_nearest(rebuilt, queries, 64, radius, power); });
-    t.build = seconds_since(start) - t.seconds * repeat;
-    print("caustic k=64", "kd-tree", 0, photons.size(), queries.size(), t);
-    for (const float f : cells) {
-      start = Clock::now();
-      const HashGrid<Photon> grid(photons, radius * f);
-      const double build = seconds_since(start);
-      Timing g = time_queries(repeat, [&] { return sum_nearest(grid, queries, 64, radius, power); });
-      g.build = build;
-      print("caustic k=64", "grid", f, photons.size(), queries.size(), g);
-    }
+    compare("caustic k=64", own.caustic(), queries, 64, own.caustic_query().max_radius,
+            own.caustic_query().max_radius, cells, repeat, [](const Photon& p) { return double(p.power.g); });
   } else {
-    const KdTree<IrradianceSample>& tree = own.irradiance();
-    const float radius = own.global_query().max_radius;
-    const auto irradiance = [](const IrradianceSample& s) { return double(s.irradiance.g); };
-    std::vector<IrradianceSample> samples(tree.items().begin(), tree.items().end());
-    auto start = Clock::now();
-    const KdTree<IrradianceSample> rebuilt(samples, 1);
-    Timing t = time_queries(repeat, [&] { return sum_nearest(rebuilt, queries, 1, radius, irradiance); });
-    t.build = seconds_since(start) - t.seconds * repeat;
-    print("irradiance k=1", "kd-tree", 0, samples.size(), queries.size(), t);
-    // The mean spacing of samples on the surfaces: √(area per sample), area from the map's box.
-    const Vector3 d = tree.bounds().diagonal();
-    const float spacing = std::sqrt(2 * (d.x * d.y + d.y * d.z + d.z * d.x) / float(samples.size()));
-    for (const float f : cells) {
-      start = Clock::now();
-      const HashGrid<IrradianceSample> grid(samples, spacing * f);
-      const double build = seconds_since(start);
-      Timing g = time_queries(repeat, [&] { return sum_nearest(grid, queries, 1, radius, irradiance); });
-      g.build = build;
-      print("irradiance k=1", "grid", f, samples.size(), queries.size(), g);
-    }
+    // Cells in units of the mean spacing of samples on the surfaces: √(area per sample), the
+    // area from the map's box.
+    const Vector3 d = own.irradiance().bounds().diagonal();
+    const float spacing = std::sqrt(2 * (d.x * d.y + d.y * d.z + d.z * d.x) / float(own.irradiance().size()));
+    compare("irradiance k=1", own.irradiance(), queries, 1, own.global_query().max_radius, spacing, cells, repeat,
+            [](const IrradianceSample& s) { return double(s.irradiance.g); });
   }
   return 0;
 }

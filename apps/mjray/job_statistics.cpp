@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include <sys/resource.h>
 
@@ -44,18 +45,20 @@ std::string photon_text(const JobStatistics& s) {
 std::string photon_json(const JobStatistics& s) {
   if (!s.photons) return "";
   const PhotonStatistics& p = *s.photons;
-  char text[768];
-  std::snprintf(text, sizeof text,
-                ", \"photons_caustic_emitted\": %llu, \"photons_caustic_stored\": %llu, "
-                "\"photons_global_emitted\": %llu, \"photons_global_stored\": %llu, "
-                "\"photon_irradiance_samples\": %llu, \"photon_rays\": %llu, \"seconds_photons\": %.6f, "
-                "\"seconds_photon_trace\": %.6f, \"seconds_photon_build\": %.6f, "
-                "\"seconds_photon_irradiance\": %.6f, \"photon_map_bytes\": %llu",
-                (unsigned long long)p.caustic_emitted, (unsigned long long)p.caustic_stored,
-                (unsigned long long)p.global_emitted, (unsigned long long)p.global_stored,
-                (unsigned long long)p.irradiance_samples, (unsigned long long)p.rays, p.seconds(), p.seconds_trace,
-                p.seconds_build, p.seconds_irradiance, (unsigned long long)p.memory_bytes);
-  return text;
+  const std::pair<const char*, double> fields[] = {
+      {"photons_caustic_emitted", double(p.caustic_emitted)}, {"photons_caustic_stored", double(p.caustic_stored)},
+      {"photons_global_emitted", double(p.global_emitted)},   {"photons_global_stored", double(p.global_stored)},
+      {"photon_irradiance_samples", double(p.irradiance_samples)}, {"photon_rays", double(p.rays)},
+      {"seconds_photons", p.seconds()},                        {"seconds_photon_trace", p.seconds_trace},
+      {"seconds_photon_build", p.seconds_build},               {"seconds_photon_irradiance", p.seconds_irradiance},
+      {"photon_map_bytes", double(p.memory_bytes)}};
+  std::string out;
+  for (const auto& [key, value] : fields) {
+    char field[96];
+    std::snprintf(field, sizeof field, ", \"%s\": %.10g", key, value);
+    out += field;
+  }
+  return out;
 }
 
 }  // namespace

@@ -54,8 +54,7 @@ Color PhotonMappedLight::gathered(Ray ray, RandomStream& random, RayCounters& co
     const auto hit = closest_surface(world_, accel_, ray);
     if (!hit) break;
     const Material& material = world_.materials[hit->material];
-    const Vector3 wo = normalize(-ray.direction);
-    const ShadingFrame frame{wo, face_forward(hit->shading_normal, wo), hit->geometric_normal};
+    const ShadingFrame frame = frame_facing(*hit, ray.direction);
     const Color kd = scattering(material, *hit).kd;
     if (!kd.is_black()) result += kd * stored_irradiance(hit->point, frame.n);
     const SpecularLobes lobes = specular_lobes(material, frame);

@@ -42,8 +42,7 @@ struct Tracer {
       if (!scattered) travelled += length(hit->point - ray.origin);
       const float falloff = scattered ? 1 : travelled * travelled * attenuation(light, travelled);
       const Material& material = world.materials[hit->material];
-      const Vector3 wo = normalize(-ray.direction);
-      const ShadingFrame frame{wo, face_forward(hit->shading_normal, wo), hit->geometric_normal};
+      const ShadingFrame frame = frame_facing(*hit, ray.direction);
       const LocalShading brdf = scattering(material, *hit);
       if (!brdf.kd.is_black() && (paths == PhotonPaths::kGlobal || specular_bounces > 0))
         out.push_back({hit->point, flux * falloff, PackedNormal::pack(frame.n)});
