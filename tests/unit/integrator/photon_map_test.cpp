@@ -51,13 +51,13 @@ TEST(KdTree, NearestNeighboursAreThoseOfABruteForceSearch) {
     if (q % 7 == 0) p.z = 0;
     const Normal3 up{0, 1, 0};
     const float max_distance = q % 2 ? 0.1f : 10.f;
-    const auto accept = [&](const Photon& photon) { return faces_alike(photon.normal, up); };
+    const auto accept = [&](const PackedNormal& normal) { return faces_alike(normal, up); };
     const auto near = tree.nearest(p, max_distance * max_distance, accept, out);
     // Compute the same by sorting every accepted photon by distance.
     std::vector<float> all;
     for (const Photon& photon : photons) {
       const float d2 = dot(photon.position - p, photon.position - p);
-      if (accept(photon) && d2 < max_distance * max_distance) all.push_back(d2);
+      if (accept(photon.normal) && d2 < max_distance * max_distance) all.push_back(d2);
     }
     std::sort(all.begin(), all.end());
     ASSERT_EQ(near.found.size(), std::min(all.size(), out.size())) << q;

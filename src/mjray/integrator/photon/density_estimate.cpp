@@ -12,7 +12,7 @@ Color irradiance_estimate(const KdTree<Photon>& map, const Point3& p, const Norm
   std::array<Neighbour, kMaxNeighbours> scratch;
   const size_t k = size_t(std::clamp(query.neighbours, 1, kMaxNeighbours));
   const auto near = map.nearest(p, query.max_radius * query.max_radius,
-                                [&](const Photon& photon) { return faces_alike(photon.normal, n); },
+                                [&](const PackedNormal& normal) { return faces_alike(normal, n); },
                                 std::span(scratch).first(k));
   if (near.found.empty() || !(near.radius2 > 0)) return {};
   const float radius = std::sqrt(near.radius2);

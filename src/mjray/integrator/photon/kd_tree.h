@@ -1,5 +1,6 @@
 #pragma once
-/// A static kd-tree over points, for k-nearest-neighbour queries (photon density estimates).
+/// A static kd-tree over surface points, for k-nearest-neighbour queries (photon density
+/// estimates, nearest precomputed irradiance).
 
 #include <algorithm>
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "mjray/core/bounds.h"
+#include "mjray/integrator/photon/photon.h"
 
 namespace mjray {
 
@@ -29,7 +31,7 @@ struct Neighbourhood {
 /// m = (lo + hi) / 2 along the axis of the range's widest extent, the left half before m and
 /// the right half after it; ranges of kLeafSize items or fewer stay unsplit. The tree depends
 /// only on the items and their order, never on the number of threads that built it.
-/// `Item` has a `Point3 position`.
+/// `Item` has a `Point3 position` and a `PackedNormal normal`.
 template <class Item>
 class KdTree {
  public:
@@ -37,11 +39,10 @@ class KdTree {
 
   KdTree() = default;
   /// Reorders `items` into a tree, splitting the work over `threads` threads.
-  KdTree(std::vector<Item> items, int threads) : items_(std::move(items)), axes_(items_.size()) {
+  KdTree(std::vector<Item> items, int threads) : items_(std::move(items)), nodes_(items_.size()) {
     for (const Item& item : items_) bounds_.expand(item.position);
     build(0, items_.size(), std::max(1, threads));
-    positions_.reserve(items_.size());
-    for (const Item& item : items_) positions_.push_back(item.position);
+    for (size_t i = 0; i < items_.size(); ++i) nodes_[i].position = items_[i].position, nodes_[i].normal = items_[i].normal;
   }
 
   std::span<const Item> items() const { return items_; }
@@ -50,12 +51,10 @@ class KdTree {
   /// The bounds of every item's position.
   const Bounds3& bounds() const { return bounds_; }
   /// Bytes held by the tree.
-  size_t memory_bytes() const {
-    return items_.capacity() * sizeof(Item) + positions_.capacity() * sizeof(Point3) + axes_.capacity();
-  }
+  size_t memory_bytes() const { return items_.capacity() * sizeof(Item) + nodes_.capacity() * sizeof(Node); }
 
-  /// The (at most) out.size() items nearest `p`, closer than √max_distance2, for which
-  /// `accept(item)` holds, in no particular order. No allocation: `out` is the caller's.
+  /// The (at most) out.size() items nearest `p`, closer than √max_distance2, whose normal
+  /// `accept(normal)` takes, in no particular order. No allocation: `out` is the caller's.
   template <class Accept>
   Neighbourhood nearest(const Point3& p, float max_distance2, Accept&& accept, std::span<Neighbour> out) const {
     Search<Accept> search{p, out, accept, max_distance2};
@@ -64,6 +63,13 @@ class KdTree {
   }
 
  private:
+  /// What a search reads of an item, packed: 16 bytes, four to a cache line.
+  struct Node {
+    Point3 position;
+    PackedNormal normal;
+    uint8_t axis = 0;  ///< the split axis, at a range's median
+  };
+
   /// The state of one query: a max-heap of the best items so far in `out[0, count)`.
   template <class Accept>
   struct Search {
@@ -73,10 +79,10 @@ class KdTree {
     float radius2;
     size_t count = 0;
 
-    void consider(const Point3& position, const Item& item, uint32_t index) {
-      const Vector3 d = position - p;
+    void consider(const Node& node, uint32_t index) {
+      const Vector3 d = node.position - p;
       const float distance2 = dot(d, d);
-      if (distance2 >= radius2 || !accept(item)) return;
+      if (distance2 >= radius2 || !accept(node.normal)) return;
       if (count < out.size()) {
         out[count++] = {distance2, index};
         std::push_heap(out.begin(), out.begin() + ptrdiff_t(count));
@@ -93,16 +99,16 @@ class KdTree {
   template <class S>
   void visit(size_t lo, size_t hi, S& search) const {
     if (hi - lo <= kLeafSize) {
-      for (size_t i = lo; i < hi; ++i) search.consider(positions_[i], items_[i], uint32_t(i));
+      for (size_t i = lo; i < hi; ++i) search.consider(nodes_[i], uint32_t(i));
       return;
     }
     const size_t m = lo + (hi - lo) / 2;
-    const int axis = axes_[m];
-    const float delta = search.p[axis] - positions_[m][axis];
+    const Node& node = nodes_[m];
+    const float delta = search.p[node.axis] - node.position[node.axis];
     // The side the query point is on first; the other only if the disc reaches across.
     if (delta < 0) visit(lo, m, search);
     else visit(m + 1, hi, search);
-    search.consider(positions_[m], items_[m], uint32_t(m));
+    search.consider(node, uint32_t(m));
     if (delta * delta < search.radius2) {
       if (delta < 0) visit(m + 1, hi, search);
       else visit(lo, m, search);
@@ -118,7 +124,7 @@ class KdTree {
     const size_t m = lo + (hi - lo) / 2;
     std::nth_element(items_.begin() + ptrdiff_t(lo), items_.begin() + ptrdiff_t(m), items_.begin() + ptrdiff_t(hi),
                      [axis](const Item& a, const Item& b) { return a.position[axis] < b.position[axis]; });
-    axes_[m] = uint8_t(axis);
+    nodes_[m].axis = uint8_t(axis);
     if (threads > 1) {
       std::thread left([&, lo, m] { build(lo, m, threads / 2); });
       build(m + 1, hi, threads - threads / 2);
@@ -130,8 +136,7 @@ class KdTree {
   }
 
   std::vector<Item> items_;
-  std::vector<Point3> positions_;  ///< the items' positions again, packed for the search
-  std::vector<uint8_t> axes_;      ///< the split axis of the node at each median index
+  std::vector<Node> nodes_;  ///< parallel to items_
   Bounds3 bounds_;
 };
 

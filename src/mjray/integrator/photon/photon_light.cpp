@@ -71,7 +71,7 @@ Color PhotonMappedLight::stored_irradiance(const Point3& p, const Normal3& n) co
   std::array<Neighbour, 1> nearest;
   const float radius = maps_.global_query().max_radius;
   const auto near = maps_.irradiance().nearest(
-      p, radius * radius, [&](const IrradianceSample& s) { return faces_alike(s.normal, n); }, nearest);
+      p, radius * radius, [&](const PackedNormal& normal) { return faces_alike(normal, n); }, nearest);
   return near.found.empty() ? Color{} : maps_.irradiance().items()[near.found[0].index].irradiance;
 }
 
