@@ -69,6 +69,21 @@ TEST(KdTree, NearestNeighboursAreThoseOfABruteForceSearch) {
   }
 }
 
+TEST(KdTree, EmptyTreesAndEmptyQueriesFindNothing) {
+  const auto any = [](const PackedNormal&) { return true; };
+  std::vector<Neighbour> out(4);
+  const KdTree<Photon> empty(std::vector<Photon>{}, 2);
+  EXPECT_TRUE(empty.empty());
+  const auto none = empty.nearest({0, 0, 0}, 1, any, out);
+  EXPECT_TRUE(none.found.empty());
+  EXPECT_EQ(none.radius2, 1);
+  // A query that asks for no neighbours at all reads nothing of its (empty) output.
+  const KdTree<Photon> tree(random_photons(100, 4), 2);
+  const auto zero = tree.nearest({0, 0, 0}, 2, any, std::span<Neighbour>());
+  EXPECT_TRUE(zero.found.empty());
+  EXPECT_EQ(zero.radius2, 2);
+}
+
 TEST(KdTree, IsTheSameTreeForAnyNumberOfThreads) {
   const std::vector<Photon> photons = random_photons(50000, 3);
   const KdTree<Photon> one(photons, 1);

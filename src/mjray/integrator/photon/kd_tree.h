@@ -58,7 +58,8 @@ class KdTree {
   template <class Accept>
   Neighbourhood nearest(const Point3& p, float max_distance2, Accept&& accept, std::span<Neighbour> out) const {
     Search<Accept> search{p, out, accept, max_distance2};
-    if (!out.empty()) visit(0, items_.size(), search);
+    if (out.empty()) return {{}, max_distance2};
+    visit(0, items_.size(), search);
     return {out.first(search.count), search.count == out.size() ? out[0].distance2 : max_distance2};
   }
 
