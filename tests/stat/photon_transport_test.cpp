@@ -67,11 +67,11 @@ TEST(PhotonCaustics, BallLensFocusesAtItsParaxialFocalLength) {
 struct SlabScene {
   static constexpr float kLight = 10, kTop = 3.1f, kBottom = 3, kHalfWidth = 2;
   RenderJob job;
-  SlabScene() {
+  /// By default the physical falloff 1/d²: photons then carry their share unchanged.
+  explicit SlabScene(Vector3 falloff = {0, 0, 1}) {
     job.root = test::group({test::box({-kHalfWidth, kBottom, -kHalfWidth}, {kHalfWidth, kTop, kHalfWidth}, kGlass),
                             test::mesh(test::floor_quad(100), kWhite)});
-    // Physical falloff 1/d²: photons then carry their share unchanged.
-    job.lights = {PointLight{{0, kLight, 0}, {1, 1, 1}, {0, 0, 1}}};
+    job.lights = {PointLight{{0, kLight, 0}, {1, 1, 1}, {falloff.x, falloff.y, falloff.z}}};
   }
 };
 
@@ -105,12 +105,11 @@ TEST(PhotonCaustics, StoredPowerUnderASlabIsThePowerThroughItTimesTheFresnelTran
   EXPECT_GT(std::abs(stored / expected - 0.92), 0.04);
 }
 
-TEST(PhotonCaustics, ASlabLightsTheFloorAsTheTransmissiveShadowModelDoes) {
-  // Flat glass does not focus: the photon map's floor under the slab matches the shadow rays
-  // that keep (1 − F)² there (and nothing counts twice: that would double it), within the
-  // estimate's noise (121 points that share no photons) plus 1% for what sets the two apart
-  // (the slab's apparent depth 0.5%, its inner reflections 0.2%).
-  const SlabScene scene;
+/// Flat glass does not focus: the photon map's floor under the slab matches the shadow rays
+/// that keep (1 − F)² there (and nothing counts twice: that would double it), within the
+/// estimate's noise (121 points that share no photons) plus 1% for what sets the two apart
+/// (the slab's apparent depth 0.5%, its inner reflections 0.2%).
+void expect_slab_floor_as_shadow_model(const SlabScene& scene) {
   const test::TestJob photons(scene.job, with_photons(300000, 0));
   const test::TestJob shadows(scene.job, test::oracle_options());
   double sum = 0, sum2 = 0;
@@ -125,6 +124,16 @@ TEST(PhotonCaustics, ASlabLightsTheFloorAsTheTransmissiveShadowModelDoes) {
   const double standard_error = deviation / std::sqrt(double(count));
   EXPECT_NEAR(mean, 1, 3 * standard_error + 0.01) << "standard error " << standard_error;
   EXPECT_LT(deviation, 0.25);
+}
+
+TEST(PhotonCaustics, ASlabLightsTheFloorAsTheTransmissiveShadowModelDoes) {
+  expect_slab_floor_as_shadow_model(SlabScene());
+}
+
+TEST(PhotonCaustics, PhotonsFallOffWithTheLightsAttenuationAsShadowRaysDo) {
+  // 1/(c0 + c1·d + c2·d²) with every term: at the floor (d ≈ 10) it is 1/9, not 1/d² = 1/100,
+  // so photons that kept only their inverse-square spreading would be 11 times too dark.
+  expect_slab_floor_as_shadow_model(SlabScene({1, 0.3f, 0.05f}));
 }
 
 /// The radiance inside a closed diffuse sphere of albedo `albedo` lit by a point light at its
