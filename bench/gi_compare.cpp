@@ -72,7 +72,7 @@ class PathTracedLight final : public IndirectLight {
         const float cos_l = dot(frame.n, l);
         if (!(cos_l > 0)) continue;
         ++counters.shadow;
-        const Color kept = shadow_ray_transmittance(world_, accel_, spawn_ray_to(*hit, ls.position), kShadowTMax);
+        const Color kept = shadow_ray_transmittance(world_, accel_, spawn_ray_to(*hit, ls.position), kShadowTMax).kept;
         result += throughput * brdf.eval(frame, l) * ls.intensity * kept * (kPi * cos_l);
       }
       const float albedo = (brdf.kd + brdf.ks).max_component();

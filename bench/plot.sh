@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Turns the CSV files that run_accel.sh, run_render.sh and run_povray.sh leave in bench/results
+# Turns the CSV files that run_accel.sh, run_render.sh, run_povray.sh and run_mpi.sh leave in bench/results
 # into the PNG plots of docs/performance.md (docs/perf_*.png). Needs gnuplot (Debian:
 # apt-get install -y gnuplot-nox). Plots whose CSV is missing are skipped.
 #
@@ -50,6 +50,58 @@ set grid
 plot $plots
 EOF
   echo "wrote $DOCS/perf_threads.png"
+fi
+
+# --- mjray-mpi: measured speed-up vs ranks x threads, and the model for 1-512 nodes -----------
+if [ -f "$OUT/mpi.csv" ] && [ -f "$OUT/mpi_model.csv" ]; then
+  # scene workers(ranks x threads) speed-up label, for the mjray-mpi rows (ranks > 0)
+  awk -F, 'NR > 1 && $2 > 0 { print $1, $2 * $3, $5, $2 "x" $3 }' "$OUT/mpi.csv" | sort -k1,1 -k2,2n >"$TMP/mpi.dat"
+  awk -F, 'NR > 1 && $2 == 0 { print $1, $3, $5 }' "$OUT/mpi.csv" | sort -k1,1 -k2,2n >"$TMP/mjray.dat"
+  scenes=$(cut -d' ' -f1 "$TMP/mpi.dat" | uniq | tr '\n' ' ')
+  colours=("#1f77b4" "#d62728" "#2ca02c" "#9467bd" "#ff7f0e")
+  left="(x < 2 ? x : 2) title 'ideal on 2 cores' dt 2 lc rgb '#888888'"
+  i=0
+  for s in $scenes; do
+    c=${colours[$((i % 5))]}
+    left+=", '$TMP/mpi.dat' using 2:(strcol(1) eq '$s' ? \$3 : 1/0):4 with labels offset 0,0.8 font ',8' tc rgb '$c' notitle"
+    left+=", '$TMP/mpi.dat' using 2:(strcol(1) eq '$s' ? \$3 : 1/0) with points pt 7 ps 1.4 lc rgb '$c' title '$s mjray-mpi (ranks x threads)'"
+    left+=", '$TMP/mjray.dat' using 2:(strcol(1) eq '$s' ? \$3 : 1/0) with points pt 6 ps 2 lw 2 lc rgb '$c' title '$s mjray -j N'"
+    i=$((i + 1))
+  done
+  columns=$(head -1 "$OUT/mpi_model.csv" | awk -F, '{ print NF }')
+  right=""
+  for ((k = 2; k <= columns; k++)); do
+    c=${colours[$(((k - 2) / 2 % 5))]}
+    dash=$([ $((k % 2)) -eq 0 ] && echo 1 || echo 2)
+    right+="${right:+, }'$OUT/mpi_model.csv' using 1:(100*\$$k) with linespoints lw 2 dt $dash pt 7 lc rgb '$c' title columnheader($k)"
+  done
+  gnuplot <<EOF
+set terminal pngcairo size 1200,520 font 'DejaVu Sans,11' noenhanced
+set output '$DOCS/perf_mpi.png'
+set multiplot layout 1,2
+set datafile separator whitespace
+set title 'Measured here: whole-process speed-up over mjray -j 1'
+set xlabel 'ranks x threads per rank (threads for mjray)'
+set ylabel 'speed-up'
+set xrange [0.5:4.5]
+set xtics 1
+set yrange [0:*]
+set key top left font ',9'
+set grid
+plot $left
+set datafile separator ','
+set title 'Model: parallel efficiency on N nodes'
+set xlabel 'nodes'
+set ylabel 'efficiency (%)'
+set logscale x 2
+set xtics (1, 2, 4, 8, 16, 32, 64, 128, 256, 512)
+set xrange [0.9:600]
+set yrange [0:105]
+set key bottom left font ',9'
+plot $right
+unset multiplot
+EOF
+  echo "wrote $DOCS/perf_mpi.png"
 fi
 
 # --- time vs grid size -----------------------------------------------------------------------

@@ -9,6 +9,7 @@ The run_*.sh scripts call it; it needs only the Python standard library.
   results.py accel ACCEL.jsonl OUTDIR                         accelerator tables + accel.csv
   results.py render RENDER.jsonl OUTDIR                       render tables + sweep/threads CSVs
   results.py povray POVRAY.jsonl OUTDIR                       mjray vs POV-Ray table + povray.csv
+  results.py mpi MPI.jsonl OUTDIR                             ranks x threads table + mpi.csv
 """
 import json
 import os
@@ -23,6 +24,7 @@ BVH_BYTES_TARGET = 70.0    # BVH bytes per triangle
 GRID_VS_NONE_TARGET = 10.0
 POVRAY_TARGET = 3.0
 THREADS_TARGET = 1.85
+MPI_TARGET = 0.95          # mpirun -np 2 -j 1 >= 0.95x the speed of mjray -j 2
 
 
 def load(path):
@@ -343,6 +345,55 @@ def povray_tables(argv):
     write(outdir, "povray.csv", csv)
 
 
+def mpi_tables(argv):
+    """Issue 15: speed-up and efficiency against ranks x threads, per-rank start-up and bytes."""
+    rows, outdir = load(argv[0]), argv[1]
+    cores = os.cpu_count() or 1
+    out, csv = [], ["scene,ranks,threads,wall,speedup,efficiency"]
+    launch = [r for r in rows if r["scene"] == "launch" and r["status"] == 0]
+    if launch:
+        out += ["Open MPI's fixed cost, `mpirun -np R mjray-mpi --version` (start R ranks, MPI_Init, "
+                "MPI_Finalize): " + ", ".join(
+                    f"R = {n}: {median([r['wall'] for r in launch if r['np'] == n]):.3f} s"
+                    for n in dict.fromkeys(r["np"] for r in launch)) + ".", ""]
+    for scene in dict.fromkeys(r["scene"] for r in rows if r["scene"] != "launch"):
+        rs = [r for r in rows if r["scene"] == scene and r["status"] == 0]
+        configs = list(dict.fromkeys((r["np"], r["j"]) for r in rs))
+        wall = {c: median([r["wall"] for r in rs if (r["np"], r["j"]) == c]) for c in configs}
+        base = wall.get((0, 1))
+        out += [f"### {scene}", "",
+                "| program | ranks × threads | wall s | CPU s | speed-up vs mjray -j 1 | efficiency (per thread) | "
+                "efficiency (per core) | load s (slowest rank) | build s (slowest rank) | MB sent (all ranks) | same bytes |",
+                "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+        for c in configs:
+            ranks, threads = c
+            runs = [r for r in rs if (r["np"], r["j"]) == c]
+            per = [r["ranks"] for r in runs if isinstance(r.get("ranks"), list)]
+            def slowest(key, local_key):
+                values = [max(x[key] for x in p) for p in per] or [r[local_key] for r in runs if local_key in r]
+                return fmt(median(values), 3)
+            sent = [sum(x["bytes_sent"] for x in p) / 1e6 for p in per]
+            workers = max(ranks, 1) * threads
+            speedup = base / wall[c] if base else float("nan")
+            program = "mjray" if ranks == 0 else "mjray-mpi"
+            same = all(r.get("same_image") for r in runs)
+            cpu = median([r["cpu"] for r in runs if "cpu" in r])
+            out.append(f"| {program} | {max(ranks, 1)} × {threads} | {fmt(wall[c], 3)} | {fmt(cpu)} | {times(speedup)} | "
+                       f"{fmt(speedup / workers)} | {fmt(speedup / min(workers, cores))} | {slowest('seconds_load', 'seconds_parse')} | "
+                       f"{slowest('seconds_build', 'seconds_build')} | {fmt(median(sent), 3) if sent else '–'} | {'yes' if same else 'NO'} |")
+            csv.append(f"{scene},{ranks},{threads},{wall[c]:.4f},{speedup:.4f},{speedup / workers:.4f}")
+        if (0, 2) in wall and (2, 1) in wall:
+            ratio = wall[(0, 2)] / wall[(2, 1)]
+            out += ["", f"mpirun -np 2 -j 1 against mjray -j 2: {ratio:.3f}× the speed "
+                    f"(target ≥ {MPI_TARGET}){mark(ratio >= MPI_TARGET)}"]
+        out.append("")
+    out.append("Whole-process wall time and CPU time (user + system of mpirun and every rank), medians of "
+               "the runs; ✗ = below the target; "
+               "per-core efficiency divides by min(ranks × threads, cores)." + idle_note(rows))
+    write(outdir, "mpi.md", out)
+    write(outdir, "mpi.csv", csv)
+
+
 def cell_or_fail(t, failed):
     return fmt(t, 3) if t is not None else f"failed ({failed} runs)"
 
@@ -354,7 +405,8 @@ def write(outdir, name, lines):
 
 
 if __name__ == "__main__":
-    commands = {"idle": idle, "record": record, "accel": accel_tables, "render": render_tables, "povray": povray_tables}
+    commands = {"idle": idle, "record": record, "accel": accel_tables, "render": render_tables, "povray": povray_tables,
+                "mpi": mpi_tables}
     if len(sys.argv) < 2 or sys.argv[1] not in commands or (sys.argv[1] != "idle" and len(sys.argv) < 3):
         sys.exit(__doc__)
     commands[sys.argv[1]](sys.argv[2:])

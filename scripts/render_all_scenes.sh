@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Renders every CS 488 corpus scene (../shared/corpus) and every shipped scene (with the
-# options its header names) with the mjray binary BINARY into OUTDIR, and writes the md5 of
-# every image to OUTDIR.md5. Compare two builds (e.g. before and after a refactoring that must
-# not change images):
+# Renders every CS 488 corpus scene (../shared/corpus), every shipped scene (with the
+# options its header names) and a preview of each animation with the mjray binary BINARY into
+# OUTDIR, and writes the md5 of every image to OUTDIR.md5. Compare two builds (e.g. before and
+# after a refactoring that must not change images):
 #   scripts/render_all_scenes.sh /tmp/old/mjray /tmp/before && scripts/render_all_scenes.sh build/mjray /tmp/after
 #   diff /tmp/before.md5 /tmp/after.md5
 set -uo pipefail
@@ -24,6 +24,13 @@ for s in scenes/*.lua scenes/features/*.lua; do
   mkdir -p "$out/$name"
   # shellcheck disable=SC2086
   "$bin" --quiet $opts --outdir "$out/$name" "$s" 2>"$out/$name.log" || { echo "failed: $s"; status=1; }
+done
+# The animations at a preview size, every eighth of their 96 frames, without their header's
+# --video (a movie's bytes depend on the ffmpeg version).
+for s in scenes/animation/*.lua; do
+  name=$(basename "$s" .lua)
+  mkdir -p "$out/$name"
+  "$bin" --quiet -s 2 --size 160x90 --frames 1-96:8 --outdir "$out/$name" "$s" 2>"$out/$name.log" || { echo "failed: $s"; status=1; }
 done
 (cd "$out" && find . -name '*.png' | sort | xargs md5sum) > "$out.md5"
 echo "$(wc -l < "$out.md5") images; md5s in $out.md5"

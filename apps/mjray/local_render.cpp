@@ -1,46 +1,60 @@
 #include "local_render.h"
 
 #include <cstdio>
-#include <system_error>
 
+#include "job_images.h"
 #include "render_watcher.h"
-#include "mjray/core/error.h"
-#include "mjray/io/image_codec.h"
-#include "mjray/job/job_fingerprint.h"
-#include "mjray/job/prepared_job.h"
+#include "mjray/accel/uniform_grid.h"
+#include "mjray/job/job_outputs.h"
 #include "mjray/render/image_render.h"
-#include "mjray/render/render_checkpoint.h"
 
 namespace mjray {
 
-JobStatistics render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
-                                 const LocalRunOptions& run, double parse_seconds) {
-  // Compute the flat world, its accelerator, the camera and the integrator.
+std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
+                                                const JobFingerprints& fingerprints, const LocalRunOptions& run,
+                                                double parse_seconds) {
+  // Decide what a resume keeps before building anything.
+  const auto image_path = output_path(scene, index, options.outputs);
+  const std::string fingerprint = fingerprints.of(index);
+  ResumePlan plan = plan_resume(image_path, fingerprint, run.resume);
+  if (plan.keep) {
+    if (!run.quiet) std::fprintf(stderr, "mjray: kept %s (complete)\n", image_path.string().c_str());
+    return std::nullopt;
+  }
+
+  // Compute the flat world, its accelerator, the camera and the integrator; then the image.
   const PreparedJob job(scene, index, options);
   for (const auto& w : job.warnings()) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+  JobStatistics stats = prepared_job_statistics(job, parse_seconds);
+  render_prepared_job(job, plan.state, options, fingerprint, run, stats);
+  report_written(stats, run);
+  return stats;
+}
+
+JobStatistics prepared_job_statistics(const PreparedJob& job, double parse_seconds) {
   JobStatistics stats;
   stats.image = job.output().string();
   stats.seconds_parse = parse_seconds;
   stats.seconds_build = job.build_seconds();
   stats.primitives = job.world().primitive_count();
   stats.accel = std::string(job.accelerator().name());
+  if (const auto* grid = dynamic_cast<const UniformGrid*>(&job.accelerator())) stats.grid_resolution = grid->resolution();
   if (job.photon_statistics()) stats.photons = *job.photon_statistics();
+  return stats;
+}
 
-  // Compute the image, resuming from a saved state when asked.
-  ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render);
-  const auto state_path = checkpoint_path(job.output());
-  if (run.resume) {
-    const RenderCheckpoint saved = read_checkpoint(state_path);
-    const std::string now = job_fingerprint(scene, index, options);
-    if (saved.fingerprint != now)
-      throw SceneError(state_path.string() + ": this resume state was saved by a different scene or different options (" +
-                       fingerprint_difference(saved.fingerprint, now) + "); render without --resume to start again");
-    render.resume_from(saved);
-  }
+void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const JobOptions& options,
+                         const std::string& fingerprint, const LocalRunOptions& run, JobStatistics& stats,
+                         const TileExecutorFactory& executor) {
+  // Compute the image, resuming from the saved state when there is one.
+  ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render, executor);
+  if (state) render.resume_from(*state);
   bool finished = false;
   {
-    RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding});
-    finished = render.run();
+    const PixelRect& traced = render.region();
+    RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding,
+                                                 options.render, traced.x1 - traced.x0, traced.y1 - traced.y0, run.frame});
+    finished = run.run_render ? run.run_render(job, render) : render.run();
     if (finished) watcher.finish();
   }
   stats.render = render.stats();
@@ -48,20 +62,21 @@ JobStatistics render_job_locally(const SceneDescription& scene, size_t index, co
 
   if (!finished) {
     // Keep what is done: the partial image and the state to resume from.
-    write_image(render.snapshot(), job.output(), options.outputs.encoding);
     RenderCheckpoint checkpoint = render.checkpoint();
-    checkpoint.fingerprint = job_fingerprint(scene, index, options);
-    write_checkpoint(checkpoint, state_path);
-    std::fprintf(stderr, "mjray: interrupted: wrote the partial image %s and its state; run again with --resume to finish\n",
-                 job.output().string().c_str());
+    checkpoint.fingerprint = fingerprint;
+    write_interrupted_image(checkpoint, job.output(), options.outputs.encoding);
     throw Interrupted{};
   }
-  write_image(render.image(), job.output(), options.outputs.encoding);
-  std::error_code ignored;
-  std::filesystem::remove(state_path, ignored);
+  EncodeOptions encoding = options.outputs.encoding;
+  encoding.render_seconds = stats.seconds_render;
+  write_finished_image(render.image(), job.output(), encoding, fingerprint);
   stats.peak_rss_bytes = peak_rss_bytes();
-  if (!run.quiet || run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
-  return stats;
+}
+
+void report_written(const JobStatistics& stats, const LocalRunOptions& run) {
+  if (!run.frame.empty() && (run.print_stats || !run.quiet)) std::fputs(frame_line(stats, run.frame, run.print_stats).c_str(), stderr);
+  else if (run.print_stats) std::fputs(summary_text(stats).c_str(), stderr);
+  else if (!run.quiet) std::fprintf(stderr, "mjray: wrote %s\n", stats.image.c_str());
 }
 
 }  // namespace mjray

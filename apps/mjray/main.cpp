@@ -1,5 +1,6 @@
 // mjray: read the command line → run the scene script → check every output → for each
-// gr.render job: prepare (flatten, build, camera, integrator) → render → write.
+// gr.render job --frames selects: prepare (flatten, build, camera, integrator) → render →
+// write → with --video, encode the frames.
 
 #include <chrono>
 #include <csignal>
@@ -12,9 +13,11 @@
 #include "job_statistics.h"
 #include "local_render.h"
 #include "render_watcher.h"
+#include "video_encoder.h"
+#include "watch/watch_session.h"
 #include "mjray/job/job_outputs.h"
+#include "mjray/job/job_view.h"
 #include "mjray/lua/scene_loader.h"
-#include "mjray/render/render_checkpoint.h"
 
 namespace {
 
@@ -22,6 +25,22 @@ using namespace mjray;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// --video: the frames' files and sizes, checked before anything renders.
+void check_video(const CommandLine& cl, const SceneDescription& scene, const std::vector<size_t>& frames,
+                 const JobOptions& options) {
+  std::vector<std::filesystem::path> files;
+  std::vector<std::string> sizes;
+  for (const size_t i : frames) {
+    files.push_back(output_path(scene, i, options.outputs));
+    const PixelRect crop = options.render.crop.value_or(PixelRect{});
+    const ImageSize size = job_image_size(scene.jobs[i], options.view);
+    sizes.push_back(options.render.crop ? std::to_string(crop.x1 - crop.x0) + "x" + std::to_string(crop.y1 - crop.y0)
+                                        : std::to_string(size.width) + "x" + std::to_string(size.height));
+  }
+  check_not_an_input(scene, *cl.video, {cl.scene.string(), 0}, "--video");
+  check_video_output(*cl.video, files, sizes);
 }
 
 }  // namespace
@@ -45,25 +64,52 @@ int main(int argc, char** argv) {
     std::printf("mjray %s\n", MJRAY_VERSION);
     return 0;
   }
+  for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+
+  // --watch: the live preview's loop renders, again after every change (apps/mjray/watch/).
+  if (cl.watch) {
+    try {
+      return run_watch_session(cl);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mjray: error: %s\n", e.what());
+      return 1;
+    }
+  }
 
   try {
     const auto start = std::chrono::steady_clock::now();
     const SceneDescription scene = load_scene(cl.scene, cl.load);
     const double parse_seconds = seconds_since(start);
     for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (!cl.quiet)
+      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
     const JobOptions options = job_options(cl);
     // Before rendering, so that a bad output costs no render time.
-    check_outputs(scene, options.outputs);
+    const std::vector<size_t> frames = selected_jobs(scene, options.frames);
+    check_job_views(scene, frames, options);
+    for (const auto& w : check_outputs(scene, options.outputs, frames)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
+    if (cl.video) check_video(cl, scene, frames, options);
     install_interrupt_handlers();
-    const LocalRunOptions run{cl.quiet, cl.print_stats, cl.resume};
+    const bool animation = scene.jobs.size() > 1;
     std::vector<JobStatistics> statistics;
-    for (size_t i = 0; i < scene.jobs.size(); ++i) {
-      // With --resume, jobs whose image is complete (no state file beside it) are done.
-      const auto path = output_path(scene, i, options.outputs);
-      if (cl.resume && !std::filesystem::exists(checkpoint_path(path)) && std::filesystem::exists(path)) continue;
-      statistics.push_back(render_job_locally(scene, i, options, run, parse_seconds));
+    const JobFingerprints fingerprints(scene, options);
+    for (const size_t i : frames) {
+      LocalRunOptions run;
+      run.quiet = cl.quiet;
+      run.print_stats = cl.print_stats;
+      run.resume = cl.resume;
+      if (animation) run.frame = "frame " + std::to_string(i + 1) + "/" + std::to_string(scene.jobs.size());
+      if (auto stats = render_job_locally(scene, i, options, fingerprints, run, parse_seconds)) statistics.push_back(*stats);
       if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
+    }
+    if (animation && (cl.print_stats || !cl.quiet))
+      std::fputs(animation_summary(statistics, frames.size() - statistics.size(), cl.print_stats).c_str(), stderr);
+    if (cl.video) {
+      std::vector<std::filesystem::path> files;
+      for (const size_t i : frames) files.push_back(output_path(scene, i, options.outputs));
+      encode_video(files, *cl.video, cl.fps);
+      if (!cl.quiet) std::fprintf(stderr, "mjray: wrote %s (%zu frames at %d fps)\n", cl.video->c_str(), files.size(), cl.fps);
     }
   } catch (const Interrupted&) {
     return 130;

@@ -1,5 +1,6 @@
 #include "render_watcher.h"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -23,6 +24,11 @@ std::string clock_text(double seconds) {
   return buffer;
 }
 
+/// Seconds between estimates of the anti-aliasing work from the finished tiles.
+constexpr double kShareInterval = 1.0;
+/// Without a terminal, a line at least this often even when no tenth more is done.
+constexpr double kQuietLineInterval = 5.0;
+
 }  // namespace
 
 void install_interrupt_handlers() {
@@ -36,7 +42,11 @@ void install_interrupt_handlers() {
 bool interrupted() { return g_interrupted; }
 
 RenderWatcher::RenderWatcher(ImageRender& render, std::filesystem::path image_path, WatchOptions options)
-    : render_(render), image_path_(std::move(image_path)), options_(options), terminal_(::isatty(2) != 0) {
+    : render_(render),
+      image_path_(std::move(image_path)),
+      options_(options),
+      terminal_(::isatty(2) != 0),
+      estimate_(options.width, options.height, options.render) {
   thread_ = std::thread([this] { loop(); });
 }
 
@@ -48,58 +58,70 @@ RenderWatcher::~RenderWatcher() {
 void RenderWatcher::loop() {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  auto last_snapshot = start, last_report = start;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  auto last_snapshot = start, last_report = start, last_share = start;
   while (!done_) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     if (interrupted()) render_.request_stop();
-    const auto now = Clock::now();
-    const double elapsed = std::chrono::duration<double>(now - start).count();
-    if (std::chrono::duration<double>(now - last_report).count() >= (terminal_ ? 0.25 : 0.5)) {
+    const double elapsed = seconds_since(start);
+    estimate_.update(render_.progress(), elapsed);
+    // During the first pass, how much anti-aliasing the finished tiles will need.
+    if (!options_.quiet && options_.render.antialias_samples > 0 && render_.progress().antialias_pass == 0 &&
+        seconds_since(last_share) >= kShareInterval) {
+      estimate_.set_first_pass_share(
+          supersample_share(render_.snapshot(), options_.render.tile_size, options_.render.antialias_threshold));
+      last_share = Clock::now();
+    }
+    if (seconds_since(last_report) >= (terminal_ ? 0.25 : 0.5)) {
       report(elapsed, false);
-      last_report = now;
+      last_report = Clock::now();
     }
     // Rewrite the image with what is finished so far; a failure here must not stop the render.
-    if (options_.snapshot_interval_seconds > 0 &&
-        std::chrono::duration<double>(now - last_snapshot).count() >= options_.snapshot_interval_seconds) {
+    if (options_.snapshot_interval_seconds > 0 && seconds_since(last_snapshot) >= options_.snapshot_interval_seconds) {
       try {
         write_image(render_.snapshot(), image_path_, options_.encoding);
       } catch (const std::exception& e) {
-        if (!options_.quiet) std::fprintf(stderr, "\nmjray: warning: %s\n", e.what());
+        std::fprintf(stderr, "%smjray: warning: %s\n", terminal_ && !options_.quiet ? "\n" : "", e.what());
       }
-      last_snapshot = now;
+      last_snapshot = Clock::now();
     }
   }
-  report(std::chrono::duration<double>(Clock::now() - start).count(), true);
+  const double elapsed = seconds_since(start);
+  estimate_.update(render_.progress(), elapsed);
+  report(elapsed, true);
 }
 
 void RenderWatcher::report(double elapsed, bool final) {
   if (options_.quiet) return;
-  const RenderProgress p = render_.progress();
-  double fraction = p.total ? double(p.done) / double(p.total) : 0;
-  if (final && finished_) fraction = 1;
-  fraction = std::max(shown_fraction_, std::min(fraction, final && finished_ ? 1.0 : 0.999));
-  shown_fraction_ = fraction;
-  const double rays_per_second = elapsed > 0 ? double(p.rays) / elapsed : 0;
-  const std::string stage = p.antialias_pass > 0 && !(final && finished_) ? " (anti-aliasing pass " + std::to_string(p.antialias_pass) + ")" : "";
+  const bool complete = final && finished_;
+  const ProgressView v = estimate_.view();
+  const double fraction = complete ? 1.0 : v.fraction;
+  const double eta = complete ? 0 : v.eta_seconds;
+  const double rays_per_second = elapsed > 0 ? double(render_.progress().rays) / elapsed : 0;
+  const std::string frame = options_.frame.empty() ? "" : options_.frame + ": ";
+  std::string stage;
+  if (!complete && v.choosing_pixels) stage = " (anti-aliasing: choosing pixels)";
+  else if (!complete && v.antialias_pass > 0) stage = " (anti-aliasing pass " + std::to_string(v.antialias_pass) + ")";
   if (terminal_) {
-    // A live bar rewritten in place.
+    // A live bar rewritten in place; \033[K clears what a longer line left behind.
     constexpr int kWidth = 30;
     const int filled = int(fraction * kWidth);
     std::string bar(size_t(filled), '=');
     if (filled < kWidth) bar += '>' + std::string(size_t(kWidth - filled - 1), ' ');
-    const double eta = fraction > 0.001 ? elapsed * (1 - fraction) / fraction : 0;
-    std::fprintf(stderr, "\r[%s] %5.1f%%  %6.2f Mrays/s  elapsed %s  ETA %s%s   ", bar.c_str(), fraction * 100,
-                 rays_per_second / 1e6, clock_text(elapsed).c_str(), clock_text(eta).c_str(), stage.c_str());
+    std::fprintf(stderr, "\r%s[%s] %5.1f%%  %6.2f Mrays/s  elapsed %s  ETA %s%s\033[K", frame.c_str(), bar.c_str(),
+                 fraction * 100, rays_per_second / 1e6, clock_text(elapsed).c_str(), clock_text(eta).c_str(), stage.c_str());
     if (final) std::fputc('\n', stderr);
     return;
   }
-  // Not a terminal: one line each time another tenth is done.
-  const int decile = int(fraction * 10 + 1e-9);
-  if (decile > last_decile_ && (decile > 0 || final)) {
-    last_decile_ = decile;
-    std::fprintf(stderr, "mjray: %3d%% done, %.1fs elapsed, %.2f Mrays/s%s\n", decile * 10, elapsed,
-                 rays_per_second / 1e6, stage.c_str());
-  }
+  // Not a terminal: a line each time another tenth is done, and at least every few seconds.
+  const int percent = std::max(last_percent_, int(fraction * 100 + 1e-9));
+  const bool new_tenth = percent / 10 > last_percent_ / 10 || last_percent_ < 0;
+  if (!(final || (new_tenth && percent >= 10) || elapsed - last_line_at_ >= kQuietLineInterval)) return;
+  if (!final && percent == last_percent_ && elapsed - last_line_at_ < kQuietLineInterval) return;
+  last_percent_ = percent;
+  last_line_at_ = elapsed;
+  std::fprintf(stderr, "mjray: %s%3d%% done, %.1fs elapsed, ETA %s, %.2f Mrays/s%s\n", frame.c_str(), percent, elapsed,
+               clock_text(eta).c_str(), rays_per_second / 1e6, stage.c_str());
 }
 
 }  // namespace mjray

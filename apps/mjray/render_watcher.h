@@ -4,8 +4,10 @@
 
 #include <atomic>
 #include <filesystem>
+#include <string>
 #include <thread>
 
+#include "progress_estimate.h"
 #include "mjray/io/image_codec.h"
 #include "mjray/render/image_render.h"
 
@@ -18,9 +20,12 @@ bool interrupted();
 
 /// How the watcher reports.
 struct WatchOptions {
-  bool quiet = false;                   ///< no progress output
+  bool quiet = false;                   ///< no progress output (warnings still print)
   double snapshot_interval_seconds = 5; ///< incremental image rewrites; 0 = never
   EncodeOptions encoding;               ///< of the incremental image rewrites
+  RenderSettings render;                ///< of the render watched, for the estimate of its work
+  int width = 0, height = 0;            ///< of the pixels it traces (ImageRender::region())
+  std::string frame;                    ///< "frame 7/24" in animations, shown before the progress
 };
 
 /// Runs while it lives; the destructor stops the thread and prints the final 100% line.
@@ -41,8 +46,9 @@ class RenderWatcher {
   bool terminal_;
   std::atomic<bool> done_{false};
   std::atomic<bool> finished_{false};
-  int last_decile_ = -1;
-  double shown_fraction_ = 0;  // never goes backwards
+  ProgressEstimate estimate_;
+  int last_percent_ = -1;      // of the last line without a terminal
+  double last_line_at_ = 0;    // its time
   std::thread thread_;
 };
 

@@ -1,5 +1,7 @@
--- Refraction: Snell-refracting, blended reflect/refract and Fresnel glass spheres in front of
--- a striped wall, and a glass slab over the floor.
+-- Refraction: three glass spheres in front of a striped wall, left to right: Snell
+-- refraction only (gr.refractedmaterial, index 1.5), a blend of 30% mirror and 70% refraction
+-- (gr.reflectrefractmaterial, index 1.33), and Fresnel glass (gr.fresneldiectricmaterial,
+-- index 1.5), whose mirror share grows toward the rim.
 -- Render: build/mjray -r 6 -f 6 scenes/features/glass.lua     (glass.png beside this file)
 
 local root = gr.node('root')

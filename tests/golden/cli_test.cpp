@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
@@ -217,6 +218,114 @@ TEST_F(GoldenCli, OriginalShortOptionsAreAccepted) {
   EXPECT_EQ(read_image(dir_ / "out.png").width(), 4);
 }
 
+TEST_F(GoldenCli, GetoptConventionsAttachedValuesAndGroupedFlags) {
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 4, 3));
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"-r4", "-a4", "-s4", "-f2"}, {"-og", "5"}, {"-og5"}, {"-j2", "--seed=7", "--threads=1"}, {"--"}}) {
+    std::vector<std::string> all = args;
+    all.insert(all.begin(), "--quiet");
+    all.push_back(scene.string());
+    const RunResult r = run(all);
+    EXPECT_EQ(r.exit_code, 0) << args[0] << ": " << r.err;
+  }
+  // The grouped -o still asks for the grid: the statistics name it.
+  const RunResult r = run({"-og", "5", "--quiet", "--stats", scene.string()});
+  EXPECT_NE(r.err.find("(grid 3³, 1 primitives)"), std::string::npos) << r.err;  // -o: 3·∛1 voxels
+  const std::string hint = "(run 'mjray --help' for the options)\n";
+  EXPECT_EQ(run({"-ox", scene.string()}).err, "mjray: unknown option '-x' in '-ox'\n" + hint);
+  EXPECT_EQ(run({"-r"}).err, "mjray: -r needs a value\n" + hint);
+  EXPECT_EQ(run({"-rx", scene.string()}).err, "mjray: -r expects a whole number from 0 to 1000, got 'x'\n" + hint);
+  EXPECT_EQ(run({"--stats=yes", scene.string()}).err, "mjray: --stats takes no value, got '--stats=yes'\n" + hint);
+}
+
+TEST_F(GoldenCli, OWithAFileNameSuggestsOutput) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const RunResult r = run({"-o", "out.png", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: -o takes no value: did you mean --output out.png? (-o asks for the uniform grid of optimal "
+                   "size)\n(run 'mjray --help' for the options)\n");
+  EXPECT_EQ(listing(dir_), "scene.lua");
+}
+
+TEST_F(GoldenCli, GridOptionsWithAnotherAcceleratorWarn) {
+  const auto scene = write("scene.lua", tiny_scene());
+  RunResult r = run({"--accel", "bvh", "-g", "10", "--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.err, "mjray: warning: -g has no effect with --accel bvh (it sizes the grid of --accel grid)\n");
+  r = run({"--accel", "none", "-o", "--quiet", scene.string()});
+  EXPECT_EQ(r.err, "mjray: warning: -o has no effect with --accel none (it sizes the grid of --accel grid)\n");
+  r = run({"--accel", "grid", "-g", "10", "--quiet", scene.string()});
+  EXPECT_EQ(r.err, "");
+}
+
+TEST_F(GoldenCli, AGridSmallerThanAskedForWarnsAndStatisticsReportItsSize) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const std::string json = (dir_ / "stats.json").string();
+  RunResult r = run({"--accel", "grid", "-g", "1000", "--quiet", "--stats", "--stats-json", json, scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("mjray: warning: grid resolution 1000 is above the limit of 256 voxels per axis; the grid "
+                        "uses 256³ voxels\n", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("(grid 256³, 1 primitives)"), std::string::npos) << r.err;
+  EXPECT_NE(read_file(json).find("\"grid_resolution\": 256"), std::string::npos) << read_file(json);
+  r = run({"--accel", "grid", "-g", "7", "--quiet", "--stats", "--stats-json", json, scene.string()});
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(grid 7³, 1 primitives)"), std::string::npos) << r.err;
+  EXPECT_NE(read_file(json).find("\"grid_resolution\": 7"), std::string::npos);
+  r = run({"--accel", "bvh", "--quiet", "--stats-json", json, scene.string()});
+  EXPECT_NE(read_file(json).find("\"grid_resolution\": 0"), std::string::npos);
+}
+
+TEST_F(GoldenCli, HelpListsEveryAcceleratorOfThisBuild) {
+  const RunResult r = run({"--help"});
+#ifdef MJRAY_HAVE_EMBREE
+  EXPECT_NE(r.out.find("--accel KIND         acceleration structure: bvh (default), grid, none, embree\n"), std::string::npos)
+      << r.out;
+#else
+  EXPECT_NE(r.out.find("(embree: not in this build)"), std::string::npos) << r.out;
+#endif
+}
+
+TEST_F(GoldenCli, StatisticsPrintOnlyWhenAskedAndQuietLeavesOnlyThem) {
+  const auto scene = write("scene.lua", tiny_scene());
+  const std::string image = (dir_ / "out.png").string();
+  RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.err.find("mjray: wrote " + image + "\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("primary"), std::string::npos) << r.err;
+  r = run({"--stats", scene.string()});
+  EXPECT_NE(r.err.find("mjray: wrote " + image + "\n  time "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("  rays      48 primary"), std::string::npos) << r.err;
+  r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.err, "");
+  r = run({"--quiet", "--stats", scene.string()});
+  EXPECT_EQ(r.err.rfind("mjray: wrote " + image + "\n  time ", 0), 0u) << r.err;
+}
+
+TEST_F(GoldenCli, SrgbOutputDecodesImageTexturesSoTheyKeepTheirValues) {
+  // A uniform texture of value 128 on a box that fills the view, lit by ambient 1 only: the
+  // image shows the texture as it is stored, with either gamma.
+  Image texture(2, 2);
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) texture.at(x, y) = Color(128 / 255.0f, 64 / 255.0f, 200 / 255.0f);
+  write_image(texture, dir_ / "grey.png");
+  const auto scene = write("scene.lua",
+                           "m = gr.material({1, 1, 1}, {0, 0, 0}, 1)\n"
+                           "m:set_material_texture(gr.filetexture('grey.png'))\n"
+                           "wall = gr.nh_box('wall', {-50, -50, -110}, 100)\n"
+                           "wall:set_material(m)\n"
+                           "gr.render(wall, 'out.png', 4, 4, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 30, {1, 1, 1},\n"
+                           "          {gr.light({0, 0, 5}, {0, 0, 0}, {1, 0, 0})})\n");
+  for (const char* gamma : {"linear", "srgb"}) {
+    const RunResult r = run({"--quiet", "--gamma", gamma, scene.string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const Image image = read_image(dir_ / "out.png");
+    // read_image gives v/255 of the stored bytes.
+    EXPECT_NEAR(image.at(2, 2).r * 255, 128, 1) << gamma;
+    EXPECT_NEAR(image.at(2, 2).g * 255, 64, 1) << gamma;
+    EXPECT_NEAR(image.at(2, 2).b * 255, 200, 1) << gamma;
+  }
+}
+
 TEST_F(GoldenCli, SandboxIsOnByDefaultAndUnsafeLuaLiftsIt) {
   const auto scene = write("scene.lua", "os.execute('true')\n" + tiny_scene());
   RunResult r = run({"--quiet", scene.string()});
@@ -234,6 +343,17 @@ TEST_F(GoldenCli, RelativeSceneNameResolvesAgainstTheWorkingDirectory) {
                               " --quiet scene.lua >/dev/null 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0);
   EXPECT_TRUE(fs::exists(dir_ / "rel.png"));
+}
+
+TEST_F(GoldenCli, RenderShWorksFromAnyFolderWithOptionsInAnyOrder) {
+  write("scenes/a.lua", tiny_scene("'a.png'", 3, 3));
+  write("scenes/b.lua", tiny_scene("'b.png'", 3, 3));
+  const std::string prefix = "cd " + quoted(dir_.string()) + " && MJRAY_BINARY=" + quoted(test::mjray_binary().string()) +
+                             " " + quoted((test::source_dir() / "render.sh").string());
+  EXPECT_EQ(std::system((prefix + " -s 2 --quiet scenes/a.lua >/dev/null 2>&1").c_str()), 0);
+  EXPECT_EQ(std::system((prefix + " scenes/b.lua -a 2 --quiet >/dev/null 2>&1").c_str()), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "scenes/a.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "scenes/b.png"));
 }
 
 }  // namespace

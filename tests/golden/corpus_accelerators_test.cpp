@@ -9,6 +9,7 @@
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/image_render.h"
 #include "support/corpus_scenes.h"
+#include "support/scene_builder.h"
 #include "support/test_job.h"
 #include "support/test_paths.h"
 
@@ -51,6 +52,37 @@ INSTANTIATE_TEST_SUITE_P(Corpus, CorpusAccelerators, ::testing::ValuesIn(test::c
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;
                          });
+
+}  // namespace
+}  // namespace mjray
+
+namespace mjray {
+namespace {
+
+TEST(GoldenAccelerators, CoincidentSurfacesTieTheSameWayEverywhere) {
+  // Two quads in one place, red then blue, and two unit spheres in one place: every camera ray
+  // meets two primitives at exactly the same t. The lower primitive id wins, through every
+  // accelerator.
+  RenderJob job;
+  job.root = test::group({test::mesh(test::floor_quad(3), PhongMaterial{{0.9f, 0.1f, 0.1f}, {0, 0, 0}, 1}),
+                          test::mesh(test::floor_quad(3), PhongMaterial{{0.1f, 0.1f, 0.9f}, {0, 0, 0}, 1}),
+                          test::sphere({0, 1, 0}, 0.8f, PhongMaterial{{0.1f, 0.8f, 0.1f}, {0, 0, 0}, 1}),
+                          test::sphere({0, 1, 0}, 0.8f, PhongMaterial{{0.8f, 0.8f, 0.1f}, {0, 0, 0}, 1})});
+  job.width = 48;
+  job.height = 36;
+  job.camera = {{0.3f, 4, 5}, {-0.05f, -0.6f, -1}, {0, 1, 0}, 50};
+  job.ambient = {0.3f, 0.3f, 0.3f};
+  job.lights = {PointLight{{2, 6, 3}, {0.7f, 0.7f, 0.7f}, {1, 0, 0}}};
+  const Image reference = test::render(job);
+  // The lower ids are the red quad and the green sphere.
+  EXPECT_GT(reference.at(2, 33).r, 3 * reference.at(2, 33).b);
+  EXPECT_GT(reference.at(24, 14).g, 3 * reference.at(24, 14).b);
+  for (const AcceleratorOptions& options : accelerators()) {
+    JobOptions o;
+    o.accel = options;
+    EXPECT_EQ(test::render(job, o).pixels(), reference.pixels()) << options.kind << " (grid " << options.grid_size << ")";
+  }
+}
 
 }  // namespace
 }  // namespace mjray

@@ -1,4 +1,4 @@
-// Every scene the project ships (scenes/*.lua, scenes/features/*.lua) renders through the
+// Every scene the project ships (scenes/*.lua, scenes/features/*.lua, docs/images/*.lua) renders through the
 // program with the options its header names, into every image the script asks for, at its
 // size. What the images show is checked against references in reference_images_test.cpp.
 

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/render/image_render.h"
@@ -45,11 +45,11 @@ class HardeningDegenerate : public test::LuaScriptTest {};
 TEST_F(HardeningDegenerate, NanAndInfinityAreRefusedInEveryKindOfArgument) {
   const std::string root = "root = gr.node('root')\n";
   EXPECT_EQ(error_of(root + "root:translate(0/0, 0, 0)\n"),
-            at(2) + "node:translate: argument 1 (x) must be a finite number, got a number");
+            at(2) + "node:translate: argument 1 (x) must be a finite number, got the number nan");
   EXPECT_EQ(error_of(root + "root:scale(1, 1/0, 1)\n"),
-            at(2) + "node:scale: argument 2 (y) must be a finite number, got a number");
+            at(2) + "node:scale: argument 2 (y) must be a finite number, got the number inf");
   EXPECT_EQ(error_of(root + "root:rotate('x', -1/0)\n"),
-            at(2) + "node:rotate: argument 2 (angle) must be a finite number, got a number");
+            at(2) + "node:rotate: argument 2 (angle) must be a finite number, got the number -inf");
   EXPECT_EQ(error_of("s = gr.nh_sphere('s', {0, 0/0, 0}, 1)\n"),
             at(1) + "gr.nh_sphere: argument 2 (centre) must be a table of 3 numbers, got a table whose entry 2 is "
                     "not finite");
@@ -63,12 +63,12 @@ TEST_F(HardeningDegenerate, NanAndInfinityAreRefusedInEveryKindOfArgument) {
             at(2) + "gr.render: argument 5 (eye) must be a table of 3 numbers, got a table whose entry 3 is not "
                     "finite");
   EXPECT_EQ(error_of(root + render_call("{0,0,10}, {0,0,-1}, {0,1,0}, 0/0")),
-            at(2) + "gr.render: argument 8 (fovy) must be a finite number, got a number");
+            at(2) + "gr.render: argument 8 (fovy) must be a finite number, got the number nan");
 }
 
 TEST_F(HardeningDegenerate, NumbersBeyondFloatRangeAreRefused) {
   EXPECT_EQ(error_of("root = gr.node('root')\nroot:translate(1e39, 0, 0)\n"),
-            at(2) + "node:translate: argument 1 (x) must be a number of magnitude at most 3.4e38, got a number");
+            at(2) + "node:translate: argument 1 (x) must be a number of magnitude at most 3.4e38, got the number 1e+39");
   EXPECT_EQ(error_of("l = gr.light({-1e300, 0, 0}, {1, 1, 1}, {1, 0, 0})\n"),
             at(1) + "gr.light: argument 1 (position) must be a table of 3 numbers, got a table whose entry 1 is "
                     "beyond 3.4e38");
@@ -76,15 +76,15 @@ TEST_F(HardeningDegenerate, NumbersBeyondFloatRangeAreRefused) {
 
 TEST_F(HardeningDegenerate, ZeroAndNegativeSizesAreErrors) {
   EXPECT_EQ(error_of("s = gr.nh_sphere('s', {0, 0, 0}, 0)\n"),
-            at(1) + "gr.nh_sphere: argument 3 (radius) must be a positive number, got a number");
+            at(1) + "gr.nh_sphere: argument 3 (radius) must be a positive number, got the number 0");
   EXPECT_EQ(error_of("s = gr.nh_sphere('s', {0, 0, 0}, -2)\n"),
-            at(1) + "gr.nh_sphere: argument 3 (radius) must be a positive number, got a number");
+            at(1) + "gr.nh_sphere: argument 3 (radius) must be a positive number, got the number -2");
   EXPECT_EQ(error_of("s = gr.nh_sphere('s', {0, 0, 0}, 1e-50)\n"),  // rounds to a float 0
-            at(1) + "gr.nh_sphere: argument 3 (radius) must be a positive number, got a number");
+            at(1) + "gr.nh_sphere: argument 3 (radius) must be a positive number, got the number 1e-50");
   EXPECT_EQ(error_of("b = gr.nh_box('b', {0, 0, 0}, 0)\n"),
-            at(1) + "gr.nh_box: argument 3 (size) must be a positive number, got a number");
+            at(1) + "gr.nh_box: argument 3 (size) must be a positive number, got the number 0");
   EXPECT_EQ(error_of("b = gr.nh_box('b', {0, 0, 0}, -1)\n"),
-            at(1) + "gr.nh_box: argument 3 (size) must be a positive number, got a number");
+            at(1) + "gr.nh_box: argument 3 (size) must be a positive number, got the number -1");
   EXPECT_EQ(error_of("root = gr.node('root')\nroot:scale(1, 0, 1)\n"),
             at(2) + "node:scale: a scale factor of 0 flattens the node to nothing");
   EXPECT_EQ(error_of("root = gr.node('root')\nroot:scale(1, 1e-50, 1)\n"),

@@ -172,5 +172,120 @@ TEST_F(HardeningOutput, SceneTimeoutStopsEndlessScriptsEvenInsideALibraryCall) {
   EXPECT_EQ(listing(), "scene.lua");
 }
 
+// --- where a script may write (run from a working directory of its own) ---------------------
+
+class HardeningConfinedOutput : public HardeningOutput {
+ protected:
+  /// Runs mjray from work_ on dir_/scene/scene.lua, whose gr.render writes `output`.
+  RunResult run_scene(const std::string& output, const std::vector<std::string>& options = {}) {
+    scene_ = write("scene/scene.lua", lit_sphere(output));
+    std::vector<std::string> args = options;
+    args.push_back(scene_.string());
+    return run(args, "cd " + shell_quoted(work_.string()) + " && ");
+  }
+  std::string refusal(const std::string& output, const fs::path& target) const {
+    return "mjray: error: " + scene_.string() + ":5: gr.render: '" + output + "' resolves to '" + target.string() +
+           "', outside the scene's folder '" + (dir_ / "scene").string() + "' and the working directory '" +
+           work_.string() + "'; a script may write images only inside those (choose the place with --output or "
+           "--outdir, or run mjray with --unsafe-lua to allow it)\n";
+  }
+
+  const fs::path work_ = test::make_temp_dir("work");
+  const fs::path elsewhere_ = test::make_temp_dir("elsewhere");
+  fs::path scene_;
+};
+
+TEST_F(HardeningConfinedOutput, AbsolutePathOutsideIsRefusedBeforeRendering) {
+  const fs::path target = elsewhere_ / "photo.png";
+  test::write_file(target, "the user's photo");
+  const RunResult r = run_scene("'" + target.string() + "'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, refusal(target.string(), target));
+  EXPECT_EQ(test::read_file(target), "the user's photo");
+}
+
+TEST_F(HardeningConfinedOutput, DotDotOutOfTheSceneFolderIsRefused) {
+  const RunResult r = run_scene("'../../x.png'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, refusal("../../x.png", dir_.parent_path() / "x.png"));
+  EXPECT_FALSE(fs::exists(dir_.parent_path() / "x.png"));
+}
+
+TEST_F(HardeningConfinedOutput, SymlinkedFolderPointingOutsideIsRefused) {
+  fs::create_directories(dir_ / "scene");
+  fs::create_directory_symlink(elsewhere_, dir_ / "scene" / "link");
+  const RunResult r = run_scene("'link/x.png'");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, refusal("link/x.png", elsewhere_ / "x.png"));
+  EXPECT_TRUE(fs::is_empty(elsewhere_));
+}
+
+TEST_F(HardeningConfinedOutput, InsideTheSceneFolderOrTheWorkingDirectoryIsAllowed) {
+  fs::create_directories(dir_ / "scene" / "frames");
+  EXPECT_EQ(run_scene("'frames/a.png'").exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "scene" / "frames" / "a.png"));
+  const RunResult r = run_scene("'" + (work_ / "b.png").string() + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(work_ / "b.png"));
+}
+
+TEST_F(HardeningConfinedOutput, UnsafeLuaOutputAndOutdirLiftIt) {
+  const fs::path target = elsewhere_ / "x.png";
+  RunResult r = run_scene("'" + target.string() + "'", {"--unsafe-lua"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(target));
+  // The user, not the script, chooses the place with --output or --outdir.
+  r = run_scene("'../../y.png'", {"--output", (elsewhere_ / "y.png").string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  r = run_scene("'../../z.png'", {"--outdir", elsewhere_.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(elsewhere_ / "z.png"));
+}
+
+// --- output mistakes cost no render time ------------------------------------------------------
+
+TEST_F(HardeningOutput, OutputMistakesAreFoundBeforeAnyPixelIsTraced) {
+  // The first image would take minutes; the mistake in the second is reported at once.
+  const std::string slow = "gr.render(root, 'big.png', 16384, 8192, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, "
+                           "{gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n";
+  for (const auto& [output, problem] : std::vector<std::pair<std::string, std::string>>{
+           {"nodir/e.png", "folder '" + (dir_ / "nodir").string() + "' does not exist"},
+           {"e.tga", "unsupported image format '.tga' (mjray writes .png, .ppm, .jpg, .jpeg, .exr)"}}) {
+    const auto scene = write("scene.lua", lit_sphere("'small.png'", 8) + slow + lit_sphere("'" + output + "'", 8));
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult r = run({scene.string()});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_EQ(r.err, "mjray: error: " + at(11) + ": gr.render: cannot write '" + (dir_ / output).string() + "': " + problem + "\n");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+    EXPECT_EQ(listing(), "scene.lua");
+  }
+}
+
+TEST_F(HardeningOutput, OutputFolderOfTheCommandLineIsCreatedButNotOneTheScriptNames) {
+  const auto scene = write("scene.lua", lit_sphere("'frames/a.png'"));
+  RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "frames"));
+  r = run({"--output", (dir_ / "new/deeper/a.png").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "new/deeper/a.png"));
+}
+
+TEST_F(HardeningOutput, TwoRendersWritingOneFileWarn) {
+  const auto scene = write("scene.lua", lit_sphere("'a/f.png'") + lit_sphere("'f.png'") + lit_sphere("'b/../a/f.png'"));
+  fs::create_directories(dir_ / "a");
+  fs::create_directories(dir_ / "b");
+  RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "mjray: warning: " + at(15) + ": gr.render writes '" + (dir_ / "b/../a/f.png").string() +
+                       "', which the gr.render at " + at(5) + " writes too; the later image replaces the earlier\n");
+  // --outdir keeps only the file names, so all three collide.
+  r = run({"--outdir", (dir_ / "out").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find(at(10) + ": gr.render writes '" + (dir_ / "out/f.png").string() + "', which the gr.render at " + at(5) +
+                       " writes too; the later image replaces the earlier (--outdir keeps only the file name of each "
+                       "gr.render output)\n"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace mjray

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "support/lua_script_test.h"
+#include "support/test_job.h"
 
 namespace mjray {
 namespace {
@@ -76,23 +79,100 @@ TEST_F(LuaExtensions, ExtendedMeshKeepsNormalsAndUvsOnlyWhenAsked) {
   EXPECT_EQ(without.triangles[0][1].normal, 0);
 }
 
+// A reader written in Lua, as the original project's readobj.lua was: v/vt/vn/f lines into
+// tables whose face corners are 0-based {position, uv, normal}.
+const std::string kLuaReader = R"(
+function read_extended_obj(name)
+  local mesh = {positions = {}, normals = {}, uvs = {}, faces = {}}
+  local function numbers(rest)
+    local t = {}
+    for n in rest:gmatch('%S+') do t[#t + 1] = tonumber(n) end
+    return t
+  end
+  for line in io.lines(name) do
+    local kind, rest = line:match('^(%S+)%s+(.*)$')
+    if kind == 'v' then table.insert(mesh.positions, numbers(rest))
+    elseif kind == 'vn' then table.insert(mesh.normals, numbers(rest))
+    elseif kind == 'vt' then table.insert(mesh.uvs, numbers(rest))
+    elseif kind == 'f' then
+      local face = {}
+      for corner in rest:gmatch('%S+') do
+        local p, t, n = corner:match('^(%d+)/(%d*)/(%d*)$')
+        face[#face + 1] = {tonumber(p) - 1, t ~= '' and tonumber(t) - 1 or -1, n ~= '' and tonumber(n) - 1 or -1}
+      end
+      table.insert(mesh.faces, face)
+    end
+  end
+  return mesh
+end
+)";
+
+const std::string kTexturedQuadObj =
+    "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "vn -0.3 -0.3 1\nvn 0.3 -0.3 1\nvn 0.3 0.3 1\nvn -0.3 0.3 1\nf 1/1/1 2/2/2 3/3/3 4/4/4\n";
+
+TEST_F(LuaExtensions, ASceneOwnReadobjWinsAndItsTablesMakeTheSameMeshAsTheBuiltInReader) {
+  write("quad.obj", kTexturedQuadObj);
+  write("readobj.lua", kLuaReader);
+  const std::string scene_tail =
+      "root = gr.node('root')\n"
+      "m = gr.extendedmesh('m', true, data)\n"
+      "m:set_material(gr.material({0.8,0.6,0.2}, {0.5,0.5,0.5}, 20))\n"
+      "root:add_child(m)\n"
+      "lights = {gr.light({1,2,6}, {1,1,1}, {1,0,0})}\n" + kRender;
+  const SceneDescription own =
+      load("require('readobj')\ndata = read_extended_obj('quad.obj')\nassert(type(data) == 'table')\n" + scene_tail);
+  std::filesystem::remove(dir_ / "readobj.lua");
+  const SceneDescription builtin =
+      load("require('readobj')\ndata = read_extended_obj('quad.obj')\nassert(type(data) == 'userdata')\n" + scene_tail);
+  const TriangleMesh& a = *own.jobs.at(0).root->children.at(0)->mesh;
+  const TriangleMesh& b = *builtin.jobs.at(0).root->children.at(0)->mesh;
+  EXPECT_EQ(a.positions, b.positions);
+  EXPECT_EQ(a.normals, b.normals);
+  EXPECT_EQ(a.uvs, b.uvs);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.polygon_count, 1u);
+  EXPECT_EQ(a.triangles.size(), 2u);
+
+  // The same mesh as the same four tables returned one by one, or as entries 1..4.
+  for (const char* call : {"gr.extendedmesh('m', true, t.positions, t.normals, t.uvs, t.faces)",
+                           "gr.extendedmesh('m', true, {t.positions, t.normals, t.uvs, t.faces})"}) {
+    write("readobj.lua", kLuaReader);
+    const SceneDescription d = load("require('readobj')\nt = read_extended_obj('quad.obj')\nroot = gr.node('root')\n"
+                                    "root:add_child(" + std::string(call) + ")\nlights = {gr.light({1,2,6}, {1,1,1}, {1,0,0})}\n" + kRender);
+    EXPECT_EQ(d.jobs.at(0).root->children.at(0)->mesh->triangles, b.triangles) << call;
+  }
+
+  // And it renders the same pixels, smooth normals and all.
+  EXPECT_EQ(test::TestJob(own, 0, test::oracle_options()).render().pixels(),
+            test::TestJob(builtin, 0, test::oracle_options()).render().pixels());
+}
+
 TEST_F(LuaExtensions, WrongArgumentsNameTheCallAndLine) {
   EXPECT_EQ(error_of("\nm = gr.reflectivematerial({1,1}, {1,1,1}, 10, 0.5)\n"),
             at(2) + "gr.reflectivematerial: argument 1 (kd) must be a table of 3 numbers, got a table of 2 values");
   EXPECT_EQ(error_of("m = gr.reflectivematerial({1,1,1}, {1,1,1}, 10, 1.5)\n"),
-            at(1) + "gr.reflectivematerial: argument 4 (reflectivity) must be a number from 0 to 1, got a number");
+            at(1) + "gr.reflectivematerial: argument 4 (reflectivity) must be a number from 0 to 1, got the number 1.5");
   EXPECT_EQ(error_of("\n\nm = gr.refractedmaterial({0,0,0}, {1,1,1}, 10, 1.0, 0)\n"),
-            at(3) + "gr.refractedmaterial: argument 5 (eta_t) must be a positive index of refraction, got a number");
+            at(3) + "gr.refractedmaterial: argument 5 (eta_t) must be a positive index of refraction, got the number 0");
   EXPECT_EQ(error_of("m = gr.fresneldiectricmaterial({0,0,0}, {1,1,1}, 10, 'glass', 1.5)\n"),
             at(1) + "gr.fresneldiectricmaterial: argument 4 (eta_i) must be a number, got the string 'glass'");
   EXPECT_EQ(error_of("m = gr.glossyreflectivematerial({0,0,0}, {1,1,1}, 10, 0.5, 2.5)\n"),
-            at(1) + "gr.glossyreflectivematerial: argument 5 (samples) must be a whole number from 1 to 4096, got a number");
+            at(1) + "gr.glossyreflectivematerial: argument 5 (samples) must be a whole number from 1 to 4096, got the number 2.5");
   EXPECT_EQ(error_of("l = gr.arealight({0,5,0}, {1,1,1}, {1,0,0}, {1,5,0}, {2,5,0})\n"),
             at(1) + "gr.arealight: the three corners lie on one line, so the light has no area");
   EXPECT_EQ(error_of("l = gr.arealight({0,5,0}, {1,1,1}, {1,0,0}, {1,5,0})\n"),
             at(1) + "gr.arealight: argument 5 (corner2) must be a table of 3 numbers, got nothing");
-  EXPECT_EQ(error_of("\nm = gr.extendedmesh('m', true, {})\n"),
-            at(2) + "gr.extendedmesh: argument 3 (mesh data) must be the result of read_extended_obj('file.obj'), got an empty table");
+  EXPECT_EQ(error_of("\nm = gr.extendedmesh('m', true, 'quad.obj')\n"),
+            at(2) + "gr.extendedmesh: argument 3 (mesh data) must be the result of read_extended_obj('file.obj'), or a "
+                    "table of positions, normals, uvs and faces, got the string 'quad.obj'");
+  EXPECT_EQ(error_of("\nm = gr.extendedmesh('m', true, {})\n"), at(2) + "gr.extendedmesh: the mesh needs a faces table");
+  EXPECT_EQ(error_of("m = gr.extendedmesh('m', true, {positions = {{0,0,0},{1,0,0},{0,1,0}}, faces = {{0,1,3}}})\n"),
+            at(1) + "gr.extendedmesh: face 1 corner 3 has position index 3 outside 0..2");
+  EXPECT_EQ(error_of("m = gr.extendedmesh('m', true, {positions = {{0,0,0},{1,0,0},{0,1,0}}, faces = {{{0,0},1,2}}})\n"),
+            at(1) + "gr.extendedmesh: face 1 corner 1 has uv index 0, but the mesh has no uvs");
+  EXPECT_EQ(error_of("m = gr.extendedmesh('m', true, {positions = {{0,0,0},{1,0}}, faces = {{0,1,1}}})\n"),
+            at(1) + "gr.extendedmesh: positions entry 2 must be a table of 3 numbers, got a table of 2 values");
   EXPECT_EQ(error_of("d = read_extended_obj('missing.obj')\n"), at(1) + "read_extended_obj: cannot find 'missing.obj'");
 }
 

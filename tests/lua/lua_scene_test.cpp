@@ -346,7 +346,7 @@ constexpr const char* kTranslateThenScale =
     "root = gr.node('root')\n"
     "root:translate(1, 2, 3)\n"
     "root:scale(2, 3, 4)\n";
-constexpr const char* kTableMesh = "gr.mesh('tri', {{0,0,0},{1,0,0},{0,1,0}}, {{0,1,2}})\n";
+constexpr const char* kTableMesh = "tri = gr.mesh('tri', {{0,0,0},{1,0,0},{0,1,0}}, {{0,1,2}})\n";
 // M = S·T: the translation happens first, then everything is scaled.
 constexpr const char* kPreMatrix = "[2 0 0 2; 0 3 0 6; 0 0 4 12; 0 0 0 1]";
 // M = T·S: the scale applies in the node's frame, the translation stays as written.
@@ -364,10 +364,40 @@ TEST_F(LuaScene, TransformOrderIsPreMultiplyWithoutTableMeshes) {
   expect_inverse_consistent(scene.jobs[0].root->parent_from_node);
 }
 
-TEST_F(LuaScene, TransformOrderIsPostMultiplyWhenATableMeshExists) {
-  const auto scene = load(std::string(kTableMesh) + kTranslateThenScale + render_call());
+TEST_F(LuaScene, TransformOrderIsPostMultiplyWhenTheRenderedSceneHoldsATableMesh) {
+  const auto scene = load(std::string(kTableMesh) + kTranslateThenScale + "root:add_child(tri)\n" + render_call());
   EXPECT_EQ(text(scene.jobs[0].root->parent_from_node.matrix()), kPostMatrix);
   expect_inverse_consistent(scene.jobs[0].root->parent_from_node);
+  // The choice is told, naming the gr.render line and the mesh that decided it.
+  ASSERT_EQ(scene.notes.size(), 1u);
+  EXPECT_EQ(scene.notes[0], at(6) + "node transforms compose post-multiplied (M = M·T, the old course skeleton's order) "
+                                    "for every gr.render of this script, because this scene holds the table-form gr.mesh "
+                                    "'tri' made at " + at(1).substr(0, at(1).size() - 2) +
+                                    "; --transform-order pre overrides");
+}
+
+TEST_F(LuaScene, MeshesThatTheRenderedSceneDoesNotHoldLeaveTheOrderPre) {
+  // The case: an extended mesh made but never added moved a sphere from x=1 to x=2.
+  write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  for (const std::string& unused : {std::string(kTableMesh), std::string("e = gr.extendedmesh('e', false, read_extended_obj('tri.obj'))\n")}) {
+    const auto scene = load(unused + kTranslateThenScale + render_call());
+    EXPECT_EQ(text(scene.jobs[0].root->parent_from_node.matrix()), kPreMatrix) << unused;
+    EXPECT_TRUE(scene.notes.empty());
+  }
+}
+
+TEST_F(LuaScene, TheFirstRenderDecidesTheOrderForTheWholeScript) {
+  write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  // Extended mesh in the first render: every render is post, also one without the mesh.
+  auto scene = load(std::string(kTranslateThenScale) + "e = gr.extendedmesh('e', false, read_extended_obj('tri.obj'))\n"
+                    "root:add_child(e)\n" + render_call() + "other = gr.node('other')\nother:translate(1, 2, 3)\n"
+                    "other:scale(2, 3, 4)\n" + render_call("other"));
+  EXPECT_EQ(text(scene.jobs[0].root->parent_from_node.matrix()), kPostMatrix);
+  EXPECT_EQ(text(scene.jobs[1].root->parent_from_node.matrix()), kPostMatrix);
+  // A first render without one keeps every render pre, also a later one with the mesh.
+  scene = load(std::string(kTranslateThenScale) + render_call() + kTableMesh + "root:add_child(tri)\n" + render_call());
+  EXPECT_EQ(text(scene.jobs[1].root->parent_from_node.matrix()), kPreMatrix);
+  EXPECT_TRUE(scene.notes.empty());
 }
 
 TEST_F(LuaScene, FileMeshesKeepThePreMultiplyRule) {
@@ -383,7 +413,7 @@ TEST_F(LuaScene, TransformOrderOptionOverridesTheAutomaticRule) {
             kPostMatrix);
   SceneLoadOptions pre;
   pre.transform_order = TransformOrder::kPre;
-  EXPECT_EQ(text(load(std::string(kTableMesh) + kTranslateThenScale + render_call(), pre)
+  EXPECT_EQ(text(load(std::string(kTableMesh) + kTranslateThenScale + "root:add_child(tri)\n" + render_call(), pre)
                      .jobs[0].root->parent_from_node.matrix()),
             kPreMatrix);
 }
@@ -507,7 +537,7 @@ TEST_F(LuaErrors, NonNodeToAddChild) {
 
 TEST_F(LuaErrors, MethodCalledWithADotInsteadOfAColon) {
   EXPECT_EQ(error_of("root = gr.node('root')\nroot.translate(1, 2, 3)\n"),
-            at(2) + "node:translate: must be called on a node (with ':'), got a number");
+            at(2) + "node:translate: must be called on a node (with ':'), got the number 1");
 }
 
 TEST_F(LuaErrors, NonMaterialToSetMaterial) {
@@ -532,6 +562,26 @@ TEST_F(LuaErrors, MalformedObjFileNamesBothTheSceneLineAndTheObjLine) {
   EXPECT_EQ(message.rfind(at(3) + "gr.mesh: " + obj.string() + ":3: ", 0), 0u) << message;
 }
 
+TEST_F(LuaErrors, GarbageObjFilesAreErrorsNamingTheFile) {
+  const auto obj = write("junk.obj", "hello world\n");
+  EXPECT_EQ(error_of("m = gr.mesh('m', 'junk.obj')\n"),
+            at(1) + "gr.mesh: " + obj.string() + ": no vertices ('v x y z' lines) in this OBJ file; line 1 starts with "
+                    "'hello', which is not an OBJ statement: is it an OBJ file?");
+  write("points.obj", "# only points\nv 0 0 0\nv 1 0 0\np 1 2\n");
+  EXPECT_EQ(error_of("m = gr.extendedmesh('m', false, read_extended_obj('points.obj'))\n"),
+            at(1) + "read_extended_obj: " + (dir_ / "points.obj").string() +
+                    ": no faces ('f' lines) in this OBJ file, so it would draw nothing");
+  EXPECT_EQ(error_of("v, f = readobj('junk.obj')\n").rfind(at(1) + "readobj: " + obj.string() + ": no vertices", 0), 0u);
+}
+
+TEST_F(LuaScene, ObjFileMostlyNotObjWarns) {
+  const auto obj = write("odd.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nfoo 1\nbar 2\nbaz 3\nqux 4\nquux 5\n");
+  const auto scene = load("root = gr.node('root')\nm = gr.mesh('m', 'odd.obj')\nroot:add_child(m)\n" + render_call());
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_EQ(scene.warnings[0], at(2) + obj.string() + ": 5 of its 9 statements are not OBJ; line 5 starts with 'foo', "
+                                       "which is not an OBJ statement: is it an OBJ file?");
+}
+
 TEST_F(LuaErrors, TableMeshIndexOutOfRange) {
   EXPECT_EQ(error_of("m = gr.mesh('m', {{0,0,0}, {1,0,0}, {0,1,0}},\n  {{0, 1, 3}})\n"),
             at(1) + "gr.mesh: face 1 has index 3 outside 0..2");
@@ -545,7 +595,7 @@ TEST_F(LuaErrors, TableMeshBadVertexIsNamedByItsNumber) {
   EXPECT_EQ(error_of("m = gr.mesh('m', {{0,0,0}, {1,0,0}, {0,1}}, {{0, 1, 2}})\n"),
             at(1) + "gr.mesh: vertex 3 must be a table of 3 numbers, got a table of 2 values");
   EXPECT_EQ(error_of("m = gr.mesh('m', {{0,0,0}, {1,0,0}, {0,1,0}}, {{0, 1, 2}, 5})\n"),
-            at(1) + "gr.mesh: face 2 must be a table of at least 3 vertex indices, got a number");
+            at(1) + "gr.mesh: face 2 must be a table of at least 3 vertex indices, got the number 5");
 }
 
 TEST_F(LuaErrors, EmptyLightsTable) {
@@ -656,6 +706,36 @@ TEST_F(LuaErrors, CaughtByPcallTheErrorStillNamesTheScriptLine) {
       "root = gr.node('root')\n" +
       render_call("root", "message"));
   EXPECT_EQ(scene.jobs[0].output.string(), at(1) + "gr.sphere: argument 1 (name) must be a string, got nothing");
+}
+
+TEST_F(LuaErrors, MisspelledNamesSuggestTheClosestOne) {
+  EXPECT_EQ(error_of("root = gr.node('root')\ns = gr.sphre('s')\n"),
+            at(2) + "gr.sphre is not a gr function; did you mean gr.sphere?");
+  EXPECT_EQ(error_of("m = gr.fresneldielectricmateral({0,0,0}, {1,1,1}, 10, 1, 1.5)\n"),
+            at(1) + "gr.fresneldielectricmateral is not a gr function; did you mean gr.fresneldielectricmaterial?");
+  EXPECT_EQ(error_of("root = gr.node('root')\nroot:translte(1, 2, 3)\n"),
+            at(2) + "node:translte is not a node method; did you mean node:translate?");
+  EXPECT_EQ(error_of("m = gr.material({1,1,1}, {0,0,0}, 1)\nm:set_texture(nil)\n"),
+            at(2) + "material:set_texture is not a material method; did you mean material:set_material_texture?");
+  EXPECT_EQ(error_of("x = gr.qqqqqqqq\n"), at(1) + "gr.qqqqqqqq is not a gr function");
+  // A script may still add its own names to gr.
+  EXPECT_EQ(error_of("function gr.helper() return 1 end\nassert(gr.helper() == 1)\n"), at(1).substr(0, at(1).size() - 4) +
+                                                                                           ": the scene never calls gr.render");
+}
+
+TEST_F(LuaScene, ColoursFarAboveOneWarnOncePerLine) {
+  const auto scene = load(
+      "root = gr.node('root')\n"
+      "for i = 1, 3 do m = gr.material({255, 128, 0}, {0.5, 0.5, 0.5}, 10) end\n"
+      "t = gr.checkerboardtexture({1, 1, 1}, {0, 0, 0}, 1)\n"
+      "l = gr.light({0, 0, 10}, {200, 200, 200}, {1, 0, 0})\n"
+      "far = gr.light({0, 0, 10}, {200, 200, 200}, {0, 0, 1})\n" +
+      render_call());
+  ASSERT_EQ(scene.warnings.size(), 2u);
+  EXPECT_EQ(scene.warnings[0], at(2) + "gr.material: kd {255, 128, 0} is far above 1; mjray colours run from 0 to 1 "
+                                       "(for 0-255 values, divide by 255)");
+  EXPECT_EQ(scene.warnings[1], at(4) + "gr.light: colour (with no distance falloff) {200, 200, 200} is far above 1; "
+                                       "mjray colours run from 0 to 1 (for 0-255 values, divide by 255)");
 }
 
 }  // namespace

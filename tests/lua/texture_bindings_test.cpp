@@ -158,9 +158,9 @@ TEST_F(LuaTextureErrors, BadScale) {
   EXPECT_EQ(error_of("t = gr.checkerboardtexture({1, 1, 1}, {0, 0, 0})\n"),
             at(1) + "gr.checkerboardtexture: argument 3 (scale) must be a number, got nothing");
   EXPECT_EQ(error_of("\n\nt = gr.perlinnoisewoodgraintexture({1, 1, 1}, {0, 0, 0}, 0)\n"),
-            at(3) + "gr.perlinnoisewoodgraintexture: argument 3 (scale) must be a positive number, got a number");
+            at(3) + "gr.perlinnoisewoodgraintexture: argument 3 (scale) must be a positive number, got the number 0");
   EXPECT_EQ(error_of("t = gr.perlinnoisecosineinterptexture({1, 1, 1}, {0, 0, 0}, -2)\n"),
-            at(1) + "gr.perlinnoisecosineinterptexture: argument 3 (scale) must be a positive number, got a number");
+            at(1) + "gr.perlinnoisecosineinterptexture: argument 3 (scale) must be a positive number, got the number -2");
   EXPECT_EQ(error_of("t = gr.perlinnoisemarbletexture({1, 1, 1}, {0, 0, 0}, {})\n"),
             at(1) + "gr.perlinnoisemarbletexture: argument 3 (scale) must be a number, got an empty table");
 }
@@ -169,7 +169,7 @@ TEST_F(LuaTextureErrors, WavyNeedsItsNoiseMultiplier) {
   EXPECT_EQ(error_of("t = gr.perlinnoisewavytexture({1, 1, 1}, {0, 0, 0}, 2)\n"),
             at(1) + "gr.perlinnoisewavytexture: argument 4 (noise_multiplier) must be a number, got nothing");
   EXPECT_EQ(error_of("t = gr.perlinnoisewavytexture({1, 1, 1}, {0, 0, 0}, 2, 1/0)\n"),
-            at(1) + "gr.perlinnoisewavytexture: argument 4 (noise_multiplier) must be a finite number, got a number");
+            at(1) + "gr.perlinnoisewavytexture: argument 4 (noise_multiplier) must be a finite number, got the number inf");
 }
 
 TEST_F(LuaTextureErrors, FileTextureNameMissingOrNotAString) {
@@ -190,7 +190,7 @@ TEST_F(LuaTextureErrors, MissingImageFileNamesTheFileAndTheLine) {
 TEST_F(LuaTextureErrors, UndecodableImageIsAClearError) {
   const fs::path bad = write("notes.png", "this is not an image\n");
   EXPECT_EQ(error_of("t = gr.filetexture('notes.png')\n"),
-            at(1) + "gr.filetexture: cannot read '" + bad.string() + "': not a PNG, JPEG or binary (P6) PPM file");
+            at(1) + "gr.filetexture: cannot read '" + bad.string() + "': not a PNG, JPEG, OpenEXR or binary (P6) PPM file");
   // A PNG signature followed by garbage.
   const fs::path cut = write("cut.png", std::string("\x89PNG\r\n\x1a\n", 8) + "garbage");
   const std::string message = error_of("\nt = gr.filetexture('cut.png')\n");

@@ -113,8 +113,8 @@ struct Penumbra {
 Color shade_floor(const RenderJob& job, float px, int samples) {
   const test::TestJob prepared(job, test::oracle_options({8, 8, samples}));
   RandomStream random(7, uint64_t(px * 1000 + 5000), 0);
-  RayCounters counters;
-  return prepared.prepared().integrator().radiance({{px, 1, -30}, normalize(Vector3(0, -1, 30))}, random, counters);
+  TraceState state;
+  return prepared.prepared().integrator().radiance({{px, 1, -30}, normalize(Vector3(0, -1, 30))}, random, state);
 }
 
 TEST(StatAreaLight, PenumbraMatchesTheAnalyticVisibleFraction) {

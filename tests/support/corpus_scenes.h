@@ -39,7 +39,8 @@ inline std::string identifier(std::string text) {
   return text;
 }
 
-/// Every scene the project ships: scenes/*.lua and scenes/features/*.lua, sorted.
+/// Every scene the project ships: scenes/*.lua, scenes/features/*.lua and the scenes of the
+/// documentation's pictures, docs/images/*.lua, sorted.
 std::vector<std::filesystem::path> shipped_scenes();
 
 /// The options of a scene header's "Render: build/mjray OPTIONS scenes/..." line.

@@ -5,11 +5,15 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
+#include "cli.h"
 #include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"
 #include "mjray/io/quantise.h"
+#include "mjray/lua/scene_loader.h"
 #include "support/corpus_scenes.h"
+#include "support/test_job.h"
 #include "support/test_paths.h"
 
 namespace mjray::test {
@@ -18,7 +22,7 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> shipped_scenes() {
   std::vector<fs::path> scenes;
-  for (const auto& folder : {source_dir() / "scenes", source_dir() / "scenes/features"})
+  for (const auto& folder : {source_dir() / "scenes", source_dir() / "scenes/features", source_dir() / "docs/images"})
     for (const auto& entry : fs::directory_iterator(folder))
       if (entry.path().extension() == ".lua") scenes.push_back(entry.path());
   std::sort(scenes.begin(), scenes.end());
@@ -28,7 +32,9 @@ std::vector<fs::path> shipped_scenes() {
 std::string header_options(const fs::path& scene) {
   std::ifstream in(scene);
   std::string line;
-  const std::regex render(R"(Render: +(?:build/mjray|\./render\.sh)((?: +-[-a-z]+(?: +[0-9a-z.]+)?)*))");
+  // An option, then maybe its value: a number, a word or a path, but never the scene itself.
+  const std::regex render(
+      R"(Render: +(?:build/mjray|\./render\.sh)((?: +-[-a-zA-Z]+(?: +(?!\S*\.lua(?:\s|$))[a-z0-9./_][-a-z0-9./_,:]*(?=\s|$))?)*))");
   for (int i = 0; i < 10 && std::getline(in, line); ++i) {
     std::smatch m;
     if (std::regex_search(line, m, render)) return m[1];
@@ -73,6 +79,42 @@ std::string header_options(const fs::path& scene) {
                                        << kPixelTolerance << " levels, mean difference " << mean
                                        << " levels, worst " << worst << " at (" << worst_x << ", " << worst_y
                                        << "); compare with " << path;
+}
+
+namespace {
+
+constexpr int kMaxSide = 128;
+
+/// The command line of a scene's header, as the program reads it.
+CommandLine header_command_line(const fs::path& scene) {
+  std::vector<std::string> args;
+  std::istringstream words(header_options(scene));
+  for (std::string word; words >> word;) args.push_back(word);
+  args.push_back(scene.string());
+  return parse_command_line(args);
+}
+
+}  // namespace
+
+void expect_references(const fs::path& script, const std::string& name, const std::vector<size_t>& jobs) {
+  const CommandLine cl = header_command_line(script);
+  SceneDescription scene = load_scene(script, cl.load);
+  JobOptions options = job_options(cl);
+  options.outputs = {};
+  for (RenderJob& job : scene.jobs) {
+    // Keep the camera and aspect ratio; shrink the image.
+    const double shrink = std::min(1.0, double(kMaxSide) / std::max(job.width, job.height));
+    job.width = std::max(1, int(job.width * shrink));
+    job.height = std::max(1, int(job.height * shrink));
+  }
+  std::vector<size_t> chosen = jobs;
+  if (chosen.empty())
+    for (size_t i = 0; i < scene.jobs.size(); ++i) chosen.push_back(i);
+  for (const size_t i : chosen) {
+    const Image image = TestJob(scene, i, options).render();
+    const std::string id = scene.jobs.size() > 1 ? name + "_" + std::to_string(i + 1) : name;
+    EXPECT_TRUE(matches_reference(image, id));
+  }
 }
 
 }  // namespace mjray::test

@@ -7,7 +7,9 @@
 /// (which runs the reference tests with MJRAY_UPDATE_REFERENCES=1), look at the new pictures
 /// and commit them with the change.
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -27,5 +29,10 @@ inline constexpr double kMeanTolerance = 0.05;
 /// Whether `image` matches reference `name` within the tolerance above; with
 /// MJRAY_UPDATE_REFERENCES=1 in the environment it writes the reference instead.
 ::testing::AssertionResult matches_reference(const Image& image, const std::string& name);
+
+/// Renders the jobs `jobs` of `script` (every job when empty), through the job library with the
+/// options its header names, reduced to at most 128 pixels a side (same camera), and expects
+/// each to match reference `name` (`name_N` for the N-th job of a script with several).
+void expect_references(const std::filesystem::path& script, const std::string& name, const std::vector<size_t>& jobs = {});
 
 }  // namespace mjray::test

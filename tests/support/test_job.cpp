@@ -30,10 +30,12 @@ Image TestJob::render(RenderStats* stats) const {
                       options_.render, stats);
 }
 
-Color TestJob::radiance(const Ray& ray, RayCounters* counters) const {
-  RandomStream random(0, 0, 0);
-  RayCounters ignored;
-  return prepared_->integrator().radiance(ray, random, counters ? *counters : ignored);
+Color TestJob::radiance(const Ray& ray, RayCounters* counters, uint64_t sample) const {
+  RandomStream random(0, 0, sample);
+  TraceState state;
+  const Color c = prepared_->integrator().radiance(ray, random, state);
+  if (counters) *counters = state.rays;
+  return c;
 }
 
 Image render(RenderJob job, JobOptions options) { return TestJob(std::move(job), std::move(options)).render(); }

@@ -28,8 +28,8 @@ class TestJob {
   const JobOptions& options() const { return options_; }
   /// The whole image, rendered with options().render.
   Image render(RenderStats* stats = nullptr) const;
-  /// The colour along one ray, drawing from the stream of pixel 0, sample 0.
-  Color radiance(const Ray& ray, RayCounters* counters = nullptr) const;
+  /// The colour along one ray, drawing from the stream of pixel 0, sample `sample`.
+  Color radiance(const Ray& ray, RayCounters* counters = nullptr, uint64_t sample = 0) const;
 
  private:
   SceneDescription scene_;

@@ -22,6 +22,20 @@ std::optional<std::filesystem::path> shared_dir() {
 
 std::filesystem::path mjray_binary() { return MJRAY_BINARY; }
 
+std::optional<std::filesystem::path> mjray_mpi_binary() {
+#ifdef MJRAY_MPI_BINARY
+  if (std::filesystem::exists(MJRAY_MPI_BINARY)) return std::filesystem::path(MJRAY_MPI_BINARY);
+#endif
+  return std::nullopt;
+}
+
+std::optional<std::filesystem::path> mpiexec() {
+#ifdef MJRAY_MPIEXEC
+  if (std::filesystem::exists(MJRAY_MPIEXEC)) return std::filesystem::path(MJRAY_MPIEXEC);
+#endif
+  return std::nullopt;
+}
+
 std::filesystem::path make_temp_dir(const std::string& tag) {
   static std::atomic<int> counter{0};
   const auto dir = std::filesystem::temp_directory_path() /

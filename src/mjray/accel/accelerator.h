@@ -8,6 +8,7 @@
 #include "mjray/core/bounds.h"
 #include "mjray/core/ray.h"
 #include "mjray/geometry/hit.h"
+#include "mjray/geometry/light_pyramid.h"
 
 namespace mjray {
 
@@ -39,6 +40,12 @@ class Accelerator {
   /// or one whose hit it says blocks. Without a blocker, every primitive the filter sees that
   /// the ray crosses has been shown to it.
   virtual bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const = 0;
+  /// Whether no primitive but `ignore` can touch `region` (so every shadow ray inside it
+  /// reaches its light). May say false when unsure: that only costs the rays being traced.
+  virtual bool region_clear(const LightPyramid& region, uint32_t ignore) const {
+    (void)region, (void)ignore;
+    return false;
+  }
   /// Bounds of all primitives.
   virtual Bounds3 bounds() const = 0;
   /// The name users pass to --accel.

@@ -6,7 +6,8 @@ std::optional<Hit> BruteForce::intersect(const Ray& ray, Interval t_range) const
   std::optional<Hit> nearest;
   const uint32_t n = prims_.size();
   for (uint32_t prim = 0; prim < n; ++prim) {
-    if (auto hit = prims_.intersect(prim, ray, t_range)) {
+    // At equal t the lower primitive id, tested first, stays.
+    if (auto hit = prims_.intersect(prim, ray, t_range); hit && !(nearest && hit->t >= nearest->t)) {
       t_range.max = hit->t;
       nearest = hit;
     }

@@ -19,6 +19,7 @@
 #endif
 
 #include "mjray/accel/bvh_builder.h"
+#include "mjray/core/float_steps.h"
 #include "mjray/geometry/triangle.h"
 
 namespace mjray {
@@ -118,10 +119,15 @@ template <BvhQuery kQuery>
 bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
   if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
   const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_};
+  constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
-  if (use_avx_) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
+  if (use_avx_) {
+    if constexpr (kQuery == BvhQuery::kClosest) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
+    else return avx::traverse_any<kFiltered>(view, ray, t_range, filter);
+  }
 #endif
-  return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
+  if constexpr (kQuery == BvhQuery::kClosest) return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
+  else return baseline::traverse_any<kFiltered>(view, ray, t_range, filter);
 }
 
 std::optional<Hit> Bvh::intersect(const Ray& ray, Interval t_range) const {
@@ -132,6 +138,39 @@ std::optional<Hit> Bvh::intersect(const Ray& ray, Interval t_range) const {
 
 bool Bvh::occluded(const Ray& ray, float t_max) const {
   return trace<BvhQuery::kAny>(ray, {0, t_max}, nullptr, nullptr);
+}
+
+bool Bvh::region_clear(const LightPyramid& region, uint32_t ignore) const {
+  if (nodes_.empty()) return true;
+  // Past this many nodes the proof is not worth its cost: the rays are traced instead.
+  constexpr int kNodeBudget = 48;
+  uint32_t stack[kStackSize];
+  int top = 0, visited = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    if (++visited > kNodeBudget) return false;
+    const BvhWideNode& node = nodes_[stack[--top]];
+    for (size_t i = 0; i < kBvhWidth; ++i) {
+      const Bounds3 box{{node.bounds[0][i], node.bounds[1][i], node.bounds[2][i]},
+                        {node.bounds[3][i], node.bounds[4][i], node.bounds[5][i]}};
+      if (box.empty() || region.outside(box)) continue;
+      if (node.count[i] == 0) {
+        stack[top++] = node.child[i];
+        continue;
+      }
+      // A leaf: each primitive must be surely outside.
+      for (uint32_t k = node.child[i], end = node.child[i] + node.count[i]; k < end; ++k) {
+        const LeafPrimitive& leaf = leaf_prims_[k];
+        if (leaf.prim == ignore) continue;
+        const bool outside = leaf.prim < triangle_count_
+                                 ? region.outside(std::bit_cast<Point3>(leaf.p0), std::bit_cast<Point3>(leaf.p1),
+                                                  std::bit_cast<Point3>(leaf.p2))
+                                 : region.outside(prims_.primitive_bounds(leaf.prim));
+        if (!outside) return false;
+      }
+    }
+  }
+  return true;
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {

@@ -56,6 +56,7 @@ class Bvh final : public Accelerator {
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
   bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const override;
+  bool region_clear(const LightPyramid& region, uint32_t ignore) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "bvh"; }
   size_t memory_bytes() const override;

@@ -1,10 +1,15 @@
 #include "mjray/accel/bvh_builder.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <future>
 #include <system_error>
 #include <thread>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace mjray {
 
@@ -13,62 +18,131 @@ namespace {
 constexpr int kBins = 32;
 // Below this many primitives a subtree is built on the current thread.
 constexpr uint32_t kMinParallelSize = 8192;
+// Above this many primitives a node's binning is shared among its threads.
+constexpr uint32_t kMinParallelBinning = 65536;
 // Deeper than this, splits halve the primitives, so the depth (and the traversal stack)
 // stays under kMaxSahDepth + 32.
 constexpr int kMaxSahDepth = 30;
 
-/// A primitive during the build: its bounds, with the centroid kept doubled (lo + hi).
-struct BuildRef {
-  Bounds3 box;
-  uint32_t prim;
-  float centroid(int axis) const { return box.lo[axis] + box.hi[axis]; }
+/// A box as four-float rows (the fourth lane unused, or the primitive id in a BuildRef), so
+/// that growing one is two SIMD instructions.
+struct alignas(16) Box4 {
+  float lo[4] = {kInfinity, kInfinity, kInfinity, 0};
+  float hi[4] = {-kInfinity, -kInfinity, -kInfinity, 0};
+
+  void grow(const Box4& b) {
+#if defined(__SSE2__)
+    _mm_store_ps(lo, _mm_min_ps(_mm_load_ps(lo), _mm_load_ps(b.lo)));
+    _mm_store_ps(hi, _mm_max_ps(_mm_load_ps(hi), _mm_load_ps(b.hi)));
+#else
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], b.lo[a]), hi[a] = std::max(hi[a], b.hi[a]);
+#endif
+  }
+  void grow_point(const float (&p)[4]) {
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  }
+  float extent(int a) const { return hi[a] - lo[a]; }
+  /// Half the surface area (enough for comparing costs); 0 when empty.
+  float half_area() const {
+    const float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+    return dx >= 0 ? dx * dy + dy * dz + dz * dx : 0;
+  }
+};
+
+/// A primitive during the build: its bounds, the id in lo[3] (as bits), and the centroid kept
+/// doubled (lo + hi).
+struct BuildRef : Box4 {
+  uint32_t prim() const { return std::bit_cast<uint32_t>(lo[3]); }
+  float centroid(int axis) const { return lo[axis] + hi[axis]; }
+};
+
+/// A subtree's box and the box of its primitives' (doubled) centroids.
+struct Extent {
+  Box4 box;
+  Box4 centroids;
 };
 
 struct Bin {
-  Bounds3 box;
+  Box4 box;
   uint32_t count = 0;
+};
+/// Bins per axis; only the first Binner::count of each row are used. Left uninitialised for
+/// speed: find_split resets the ones it uses.
+struct Bins {
+  Bins() {}
+  union {
+    std::array<std::array<Bin, kBins>, 3> rows;
+  };
+  std::array<Bin, kBins>& operator[](size_t axis) { return rows[axis]; }
+  const std::array<Bin, kBins>& operator[](size_t axis) const { return rows[axis]; }
+  void reset(int count) {
+    for (auto& row : rows)
+      for (int b = 0; b < count; ++b) row[size_t(b)] = Bin{};
+  }
 };
 
 bool is_finite(const Bounds3& b) { return is_finite(b.lo) && is_finite(b.hi) && !b.empty(); }
 
-std::array<float, 3> floats(const Point3& p) { return {p.x, p.y, p.z}; }
+/// Maps doubled centroids to bins along each axis; NaN (0·∞ when an extent is too small for
+/// a finite scale) and out-of-range values land in the end bins, the same way for binning and
+/// partitioning. Small nodes use fewer bins (one per primitive, at least 4): no fewer
+/// candidate splits that matter, and less fixed work per node.
+struct Binner {
+  float lo[3], scale[3];
+  int count;
+
+  Binner(const Box4& centroids, uint32_t primitives) : count(int(std::clamp<uint32_t>(primitives, 4, kBins))) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = centroids.lo[a];
+      const float extent = centroids.hi[a] - centroids.lo[a];
+      // Slightly under count / extent so that the largest centroid lands in the last bin.
+      scale[a] = extent > 0 ? float(count) * (1 - 1e-6f) / extent : 0;
+    }
+  }
+  int bin(const BuildRef& r, int axis) const {
+    const float f = (r.centroid(axis) - lo[axis]) * scale[axis];
+    return f > 0 ? (f < float(count - 1) ? int(f) : count - 1) : 0;
+  }
+};
 
 class Builder {
  public:
-  Builder(std::vector<BuildRef> refs, const BvhBuildOptions& options)
-      : refs_(std::move(refs)), options_(options) {}
+  Builder(std::vector<BuildRef> refs, const BvhBuildOptions& options) : refs_(std::move(refs)), options_(options) {}
 
   std::vector<BvhNode> build(int threads) {
     std::vector<BvhNode> nodes;
     nodes.reserve(refs_.size() * 2 / std::max(1, options_.max_leaf_size) + 1);
-    if (!refs_.empty()) build_node(0, uint32_t(refs_.size()), 0, threads, nodes);
+    if (refs_.empty()) return nodes;
+    Extent all;
+    for (const BuildRef& r : refs_) {
+      all.box.grow(r);
+      const float c[4] = {r.centroid(0), r.centroid(1), r.centroid(2), 0};
+      all.centroids.grow_point(c);
+    }
+    build_node(0, uint32_t(refs_.size()), all, 0, threads, nodes);
     return nodes;
   }
 
   std::vector<uint32_t> order() const {
     std::vector<uint32_t> ids(refs_.size());
-    for (size_t i = 0; i < refs_.size(); ++i) ids[i] = refs_[i].prim;
+    for (size_t i = 0; i < refs_.size(); ++i) ids[i] = refs_[i].prim();
     return ids;
   }
 
  private:
   struct Split {
     int axis = -1;
-    int bin = 0;       // left side: bins [0, bin)
+    int bin = 0;  // left side: bins [0, bin)
     float cost = kInfinity;
   };
 
-  // Appends the subtree over refs_[begin, end) to `out`, depth-first, child indices absolute
-  // in `out`.
-  void build_node(uint32_t begin, uint32_t end, int depth, int threads, std::vector<BvhNode>& out) {
+  // Appends the subtree over refs_[begin, end) (whose extent is `extent`) to `out`,
+  // depth-first, child indices absolute in `out`.
+  void build_node(uint32_t begin, uint32_t end, const Extent& extent, int depth, int threads, std::vector<BvhNode>& out) {
     const uint32_t n = end - begin;
-    Bounds3 box, centroids;
-    for (uint32_t i = begin; i < end; ++i) {
-      box.expand(refs_[i].box);
-      centroids.expand(Point3(refs_[i].centroid(0), refs_[i].centroid(1), refs_[i].centroid(2)));
-    }
     const uint32_t index = uint32_t(out.size());
-    out.push_back({floats(box.lo), floats(box.hi), 0, 0, 0});
+    out.push_back({{extent.box.lo[0], extent.box.lo[1], extent.box.lo[2]},
+                   {extent.box.hi[0], extent.box.hi[1], extent.box.hi[2]}, 0, 0, 0});
     const auto make_leaf = [&] {
       out[index].offset = begin;
       out[index].count = uint16_t(n);
@@ -77,23 +151,23 @@ class Builder {
 
     // Choose a split: binned SAH on all three axes, or the median of the widest centroid
     // axis when the centroids coincide, SAH found nothing, or the tree got too deep.
-    const Vector3 extent = centroids.diagonal();
-    const int widest = extent.x >= extent.y ? (extent.x >= extent.z ? 0 : 2) : (extent.y >= extent.z ? 1 : 2);
+    const Box4& centroids = extent.centroids;
+    const int widest = centroids.extent(0) >= centroids.extent(1) ? (centroids.extent(0) >= centroids.extent(2) ? 0 : 2)
+                                                                   : (centroids.extent(1) >= centroids.extent(2) ? 1 : 2);
     uint32_t mid = begin;
     int axis = widest;
-    bool use_median = depth >= kMaxSahDepth || !(extent[widest] > 0);
+    Extent left, right;
+    bool use_median = depth >= kMaxSahDepth || !(centroids.extent(widest) > 0);
     if (!use_median) {
-      const Split split = find_split(begin, end, centroids);
-      const float leaf_cost = float(n) * box.surface_area();
+      const Binner binner(centroids, n);
+      const Split split = find_split(begin, end, binner, threads);
+      const float leaf_cost = float(n) * extent.box.half_area();
       if (n <= uint32_t(options_.max_leaf_size) && leaf_cost <= split.cost) return make_leaf();
       if (split.axis < 0) {
         use_median = true;
       } else {
         axis = split.axis;
-        const float lo = centroids.lo[axis], scale = bin_scale(centroids, axis);
-        BuildRef* mid_ptr = std::partition(refs_.data() + begin, refs_.data() + end,
-                                           [&](const BuildRef& r) { return bin_of(r, axis, lo, scale) < split.bin; });
-        mid = uint32_t(mid_ptr - refs_.data());
+        mid = partition(begin, end, [&](const BuildRef& r) { return binner.bin(r, axis) < split.bin; }, left, right);
         use_median = mid == begin || mid == end;
       }
     }
@@ -101,9 +175,11 @@ class Builder {
       if (n <= uint32_t(options_.max_leaf_size)) return make_leaf();
       axis = widest;
       mid = begin + n / 2;
-      if (extent[widest] > 0)
+      if (centroids.extent(widest) > 0)
         std::nth_element(refs_.data() + begin, refs_.data() + mid, refs_.data() + end,
                          [&](const BuildRef& a, const BuildRef& b) { return a.centroid(axis) < b.centroid(axis); });
+      left = extent_of(begin, mid);
+      right = extent_of(mid, end);
     }
     out[index].axis = uint8_t(axis);
 
@@ -113,79 +189,120 @@ class Builder {
     std::future<void> task;  // declared after its outputs: its destructor waits for it
     if (threads > 1 && n >= kMinParallelSize) {
       try {
-        task = std::async(std::launch::async, [&] { build_node(begin, mid, depth + 1, threads / 2, first); });
+        task = std::async(std::launch::async, [&] { build_node(begin, mid, left, depth + 1, threads / 2, first); });
       } catch (const std::system_error&) {
         threads = 1;  // no thread to be had: build this subtree serially
       }
     }
     if (task.valid()) {
-      build_node(mid, end, depth + 1, threads - threads / 2, second);
+      build_node(mid, end, right, depth + 1, threads - threads / 2, second);
       task.get();
       append(out, first);
       out[index].offset = uint32_t(out.size());
       append(out, second);
     } else {
-      build_node(begin, mid, depth + 1, threads, out);
+      build_node(begin, mid, left, depth + 1, threads, out);
       out[index].offset = uint32_t(out.size());
-      build_node(mid, end, depth + 1, threads, out);
+      build_node(mid, end, right, depth + 1, threads, out);
     }
   }
 
-  static float bin_scale(const Bounds3& centroids, int axis) {
-    // Slightly under kBins / extent so that the largest centroid lands in the last bin.
-    return float(kBins) * (1 - 1e-6f) / (centroids.hi[axis] - centroids.lo[axis]);
+  Extent extent_of(uint32_t begin, uint32_t end) const {
+    Extent e;
+    for (uint32_t i = begin; i < end; ++i) add(e, refs_[i]);
+    return e;
   }
 
-  // The bin of a centroid; NaN (0·∞ when the extent is too small for a finite scale) and
-  // out-of-range values land in the end bins, the same way for binning and partitioning.
-  static int bin_of(const BuildRef& r, int axis, float lo, float scale) {
-    const float f = (r.centroid(axis) - lo) * scale;
-    return f > 0 ? (f < float(kBins - 1) ? int(f) : kBins - 1) : 0;
+  static void add(Extent& e, const BuildRef& r) {
+    e.box.grow(r);
+    const float c[4] = {r.centroid(0), r.centroid(1), r.centroid(2), 0};
+    e.centroids.grow_point(c);
   }
 
-  // The cheapest SAH split over all axes, costs in units of node area (not divided by it,
-  // so flat or point-like nodes need no special case).
-  Split find_split(uint32_t begin, uint32_t end, const Bounds3& centroids) const {
-    // Bin the primitives on all three axes in one pass over them.
-    const Vector3 extent = centroids.diagonal();
-    std::array<std::array<Bin, kBins>, 3> bins{};
-    std::array<float, 3> lo{}, scale{};
-    for (int axis = 0; axis < 3; ++axis) {
-      lo[size_t(axis)] = centroids.lo[axis];
-      scale[size_t(axis)] = extent[axis] > 0 ? bin_scale(centroids, axis) : 0;
+  // Moves the refs for which `goes_left` holds to the front of [begin, end) and returns the
+  // boundary, computing each side's extent on the way.
+  template <class Predicate>
+  uint32_t partition(uint32_t begin, uint32_t end, Predicate goes_left, Extent& left, Extent& right) {
+    uint32_t i = begin, j = end;
+    while (i < j) {
+      if (goes_left(refs_[i])) {
+        add(left, refs_[i++]);
+      } else {
+        --j;
+        std::swap(refs_[i], refs_[j]);
+        add(right, refs_[j]);
+      }
     }
+    return i;
+  }
+
+  // Bins refs_[begin, end) on all three axes at once.
+  void bin(uint32_t begin, uint32_t end, const Binner& binner, Bins& bins) const {
     for (uint32_t i = begin; i < end; ++i) {
       const BuildRef& ref = refs_[i];
-      for (size_t axis = 0; axis < 3; ++axis) {
-        Bin& bin = bins[axis][size_t(bin_of(ref, int(axis), lo[axis], scale[axis]))];
-        bin.box.expand(ref.box);
-        ++bin.count;
+      for (int axis = 0; axis < 3; ++axis) {
+        Bin& b = bins[size_t(axis)][size_t(binner.bin(ref, axis))];
+        b.box.grow(ref);
+        ++b.count;
       }
+    }
+  }
+
+  // The cheapest SAH split over all axes, costs in units of half node area (not divided by
+  // it, so flat or point-like nodes need no special case).
+  Split find_split(uint32_t begin, uint32_t end, const Binner& binner, int threads) const {
+    // Compute the bins, in slices on several threads for the largest nodes.
+    const int count = binner.count;
+    Bins bins;
+    bins.reset(count);
+    const uint32_t n = end - begin;
+    if (threads > 1 && n >= kMinParallelBinning) {
+      std::vector<Bins> partial(static_cast<size_t>(threads));
+      for (Bins& p : partial) p.reset(count);
+      std::vector<std::thread> workers;
+      for (int t = 0; t < threads; ++t) {
+        const uint32_t lo = begin + uint32_t(uint64_t(n) * uint64_t(t) / uint64_t(threads));
+        const uint32_t hi = begin + uint32_t(uint64_t(n) * uint64_t(t + 1) / uint64_t(threads));
+        if (t == threads - 1) {
+          bin(lo, hi, binner, partial[size_t(t)]);
+        } else {
+          workers.emplace_back([&, lo, hi, t] { bin(lo, hi, binner, partial[size_t(t)]); });
+        }
+      }
+      for (std::thread& w : workers) w.join();
+      for (const Bins& p : partial)
+        for (size_t a = 0; a < 3; ++a)
+          for (size_t b = 0; b < size_t(count); ++b) {
+            bins[a][b].box.grow(p[a][b].box);
+            bins[a][b].count += p[a][b].count;
+          }
+    } else {
+      bin(begin, end, binner, bins);
     }
 
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
-      if (!(extent[axis] > 0)) continue;
+      if (!(binner.scale[axis] > 0)) continue;
       const auto& axis_bins = bins[size_t(axis)];
-      // Compute the right-hand areas and counts, then sweep from the left.
-      std::array<float, kBins> right_cost{};
-      Bounds3 right;
+      // Compute the right-hand costs, then sweep from the left.
+      std::array<float, kBins> right_cost;
+      Box4 right;
       uint32_t right_count = 0;
-      for (int b = kBins - 1; b > 0; --b) {
-        right.expand(axis_bins[size_t(b)].box);
+      for (int b = count - 1; b > 0; --b) {
+        right.grow(axis_bins[size_t(b)].box);
         right_count += axis_bins[size_t(b)].count;
-        right_cost[size_t(b)] = right.surface_area() * float(right_count);
+        right_cost[size_t(b)] = right.half_area() * float(right_count);
       }
-      Bounds3 left;
+      Box4 node = right;
+      node.grow(axis_bins[0].box);
+      const float traversal = options_.traversal_cost * node.half_area();
+      Box4 left;
       uint32_t left_count = 0;
-      Bounds3 node;
-      for (const Bin& bin : axis_bins) node.expand(bin.box);
-      const float traversal = options_.traversal_cost * node.surface_area();
-      for (int b = 1; b < kBins; ++b) {
-        left.expand(axis_bins[size_t(b - 1)].box);
+      for (int b = 1; b < count; ++b) {
+        left.grow(axis_bins[size_t(b - 1)].box);
         left_count += axis_bins[size_t(b - 1)].count;
-        if (left_count == 0 || left_count == end - begin) continue;
-        const float cost = traversal + left.surface_area() * float(left_count) + right_cost[size_t(b)];
+        if (left_count == 0 || left_count == n) continue;
+        const float cost = traversal + left.half_area() * float(left_count) + right_cost[size_t(b)];
         if (cost < best.cost) best = {axis, b, cost};
       }
     }
@@ -209,10 +326,15 @@ class Builder {
 BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options) {
   std::vector<BuildRef> refs;
   refs.reserve(bounds.size());
-  for (uint32_t prim = 0; prim < bounds.size(); ++prim)
-    if (is_finite(bounds[prim])) refs.push_back({bounds[prim], prim});
-  const int threads = options.threads > 0 ? options.threads
-                                          : int(std::max(1u, std::thread::hardware_concurrency()));
+  for (uint32_t prim = 0; prim < bounds.size(); ++prim) {
+    if (!is_finite(bounds[prim])) continue;
+    BuildRef r;
+    const Bounds3& b = bounds[prim];
+    r.lo[0] = b.lo.x, r.lo[1] = b.lo.y, r.lo[2] = b.lo.z, r.lo[3] = std::bit_cast<float>(prim);
+    r.hi[0] = b.hi.x, r.hi[1] = b.hi.y, r.hi[2] = b.hi.z, r.hi[3] = 0;
+    refs.push_back(r);
+  }
+  const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
   Builder builder(std::move(refs), options);
   BvhBuildResult result;
   result.nodes = builder.build(threads);

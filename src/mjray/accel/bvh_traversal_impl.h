@@ -124,16 +124,20 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
     } else {
       for (uint32_t i = current.child, end = current.child + current.count; i < end; ++i) {
         const LeafPrimitive& leaf = bvh.leaves[i];
+        // Once something is hit, a primitive at exactly the same t may still win: the lower
+        // primitive id does, as with every accelerator.
+        const float reach = found ? next_float(t_max, true) : t_max;
         Hit h;
         if (leaf.prim < bvh.triangle_count) {
-          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
+          const auto tri = intersect_triangle(tri_ray, {t_min, reach}, leaf.p0, leaf.p1, leaf.p2);
           if (!tri) continue;
           h = {tri->t, leaf.prim, tri->b1, tri->b2};
         } else {
-          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
+          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, reach});
           if (!shape) continue;
           h = *shape;
         }
+        if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
         if constexpr (kQuery == BvhQuery::kAny) return true;
         if constexpr (kQuery == BvhQuery::kFiltered) {
           if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks(h)) return true;
@@ -149,5 +153,60 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
       if (top == 0) return found;
       current = stack[--top];
     } while (current.t_enter > t_max * kFarScale);
+  }
+}
+
+/// The leaf children of a node, one bit per slot whose count is not zero.
+inline unsigned leaf_children(const BvhWideNode& node) {
+  unsigned mask = 0;
+  for (size_t i = 0; i < kBvhWidth; ++i) mask |= unsigned(node.count[i] != 0) << i;
+  return mask;
+}
+
+/// Any blocking hit for t in `t_range` (an opaque primitive, or a transmissive one `filter`
+/// says blocks; with kFiltered false, any primitive): returns at the first. No child is
+/// ordered by distance, and a node's leaves are tested before its inner children are
+/// descended into, since a leaf may end the query at once.
+template <bool kFiltered>
+bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, HitFilter* filter) {
+  const BoxRay box_ray(ray);
+  const WatertightRay tri_ray(ray);
+  const float t_min = t_range.min, t_max = t_range.max;
+  uint32_t stack[kStackSize];
+  int top = 0;
+  uint32_t node_index = 0;
+  std::array<float, kBvhWidth> t_enter;
+  for (;;) {
+    const BvhWideNode& node = bvh.nodes[node_index];
+    const unsigned mask = hit_children(node, box_ray, t_min, t_max, t_enter);
+    const unsigned leaves = leaf_children(node);
+    // Compute the leaves' primitives first.
+    for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
+      const size_t i = size_t(std::countr_zero(m));
+      for (uint32_t k = node.child[i], end = node.child[i] + node.count[i]; k < end; ++k) {
+        const LeafPrimitive& leaf = bvh.leaves[k];
+        if (leaf.prim < bvh.triangle_count) {
+          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
+          if (!tri) continue;
+          if constexpr (!kFiltered) return true;
+          if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks({tri->t, leaf.prim, tri->b1, tri->b2}))
+            return true;
+        } else {
+          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
+          if (!shape) continue;
+          if constexpr (!kFiltered) return true;
+          if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks(*shape)) return true;
+        }
+      }
+    }
+    // Then descend: the first inner child next, the others later.
+    unsigned inner = mask & ~leaves;
+    if (inner != 0) {
+      node_index = node.child[size_t(std::countr_zero(inner))];
+      for (inner &= inner - 1; inner != 0; inner &= inner - 1) stack[top++] = node.child[size_t(std::countr_zero(inner))];
+      continue;
+    }
+    if (top == 0) return false;
+    node_index = stack[--top];
   }
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mjray/core/error.h"
+#include "mjray/core/float_steps.h"
 
 namespace mjray {
 
@@ -82,6 +83,7 @@ struct FilterContext {
   RTCIntersectContext embree;
   const PrimitiveSet* prims;
   HitFilter* filter;
+  Interval t_range;  ///< the query's: in a filter call Embree has set the ray's tfar to the hit's t
 };
 
 /// Whether the hit of a filtered query on transmissive `prim` blocks: the filter sees the hit
@@ -115,9 +117,7 @@ void triangle_occlusion_filter(const RTCFilterFunctionNArguments* args) {
     if (args->valid[i] != -1 || RTCHitN_geomID(args->hit, args->N, i) != kTriangleGeometry) continue;
     const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
     if (!context.prims->filtered(prim, context.filter->sees_opaque)) continue;
-    const Interval range{RTCRayN_tnear(args->ray, args->N, i) <= kTNear ? 0 : RTCRayN_tnear(args->ray, args->N, i),
-                         RTCRayN_tfar(args->ray, args->N, i)};
-    if (!filtered_blocks(context, prim, ray_of(args->ray, args->N, i), range)) args->valid[i] = 0;
+    if (!filtered_blocks(context, prim, ray_of(args->ray, args->N, i), context.t_range)) args->valid[i] = 0;
   }
 }
 
@@ -220,16 +220,42 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, Interval t_range
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rayhit);
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  if (rayhit.hit.geomID == kShapeGeometry)
-    return Hit{rayhit.ray.tfar, uint32_t(prims_.triangles.size()) + rayhit.hit.primID};
-  // Recompute the hit with mjray's own watertight test, so that t, u and v (and with them
-  // the image) are bit for bit those of every other accelerator. Embree's (u, v) weight
-  // vertices 1 and 2 as mjray's (b1, b2) do; they are the fallback should the exact test
-  // miss a triangle Embree grazed.
-  const uint32_t prim = rayhit.hit.primID;
-  if (exact_hits_)
-    if (auto exact = prims_.intersect(prim, ray, {t_range.min, kInfinity})) return exact;
-  return Hit{rayhit.ray.tfar, prim, rayhit.hit.u, rayhit.hit.v};
+  std::optional<Hit> hit;
+  if (rayhit.hit.geomID == kShapeGeometry) {
+    hit = Hit{rayhit.ray.tfar, uint32_t(prims_.triangles.size()) + rayhit.hit.primID};
+  } else {
+    // Recompute the hit with mjray's own watertight test, so that t, u and v (and with them
+    // the image) are bit for bit those of every other accelerator. Embree's (u, v) weight
+    // vertices 1 and 2 as mjray's (b1, b2) do; they are the fallback should the exact test
+    // miss a triangle Embree grazed.
+    const uint32_t prim = rayhit.hit.primID;
+    if (exact_hits_) hit = prims_.intersect(prim, ray, {t_range.min, kInfinity});
+    if (!hit) hit = Hit{rayhit.ray.tfar, prim, rayhit.hit.u, rayhit.hit.v};
+  }
+  return exact_hits_ ? lowest_at_same_t(ray, *hit) : hit;
+}
+
+namespace {
+
+/// Sees every hit at exactly one t and keeps the one of the lowest primitive id.
+class SameT final : public HitFilter {
+ public:
+  explicit SameT(const Hit& first) : HitFilter(true), best(first) {}
+  bool blocks(const Hit& hit) override {
+    if (hit.t == best.t && hit.prim < best.prim) best = hit;
+    return false;
+  }
+  Hit best;
+};
+
+}  // namespace
+
+Hit EmbreeAccelerator::lowest_at_same_t(const Ray& ray, const Hit& hit) const {
+  // Embree keeps whichever of several primitives at one t it met first; the others'
+  // rule is the lowest id. Look for the others in the one-float window around t.
+  SameT same(hit);
+  occluded(ray, {next_float(hit.t, false), next_float(hit.t, true)}, same);
+  return same.best;
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
@@ -243,7 +269,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
 
 bool EmbreeAccelerator::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
   if (!valid_query(ray, t_range.max)) return false;
-  FilterContext context{{}, &prims_, &filter};
+  FilterContext context{{}, &prims_, &filter, t_range};
   rtcInitIntersectContext(&context.embree);
   context.embree.filter = prims_.any_transmissive() || filter.sees_opaque ? triangle_occlusion_filter : nullptr;
   RTCRay r = embree_ray(ray, t_range);

@@ -37,6 +37,8 @@ class EmbreeAccelerator final : public Accelerator {
 
  private:
   void release();
+  /// Among the primitives hit at exactly hit.t, the one of the lowest id (hit if alone).
+  Hit lowest_at_same_t(const Ray& ray, const Hit& hit) const;
 
   const PrimitiveSet& prims_;
   Bounds3 bounds_;

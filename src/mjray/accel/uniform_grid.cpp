@@ -5,7 +5,9 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "mjray/core/float_steps.h"
 #include "mjray/geometry/triangle.h"
 
 namespace mjray {
@@ -74,6 +76,19 @@ bool is_finite(const Bounds3& b) { return is_finite(b.lo) && is_finite(b.hi); }
 
 }  // namespace
 
+std::string UniformGrid::resolution_note() const {
+  if (resolution_ >= requested_resolution_) return "";
+  const int capped = std::min(requested_resolution_, kMaxResolution);
+  std::string note = "grid resolution " + std::to_string(requested_resolution_);
+  if (requested_resolution_ > kMaxResolution) note += " is above the limit of " + std::to_string(kMaxResolution) + " voxels per axis";
+  if (resolution_ < capped) {
+    note += requested_resolution_ > kMaxResolution ? ", and " : " ";
+    note += std::to_string(2 * resolution_) + "³ voxels would list more than " + std::to_string(reference_budget_) +
+            " primitive references (the memory budget)";
+  }
+  return note + "; the grid uses " + std::to_string(resolution_) + "³ voxels";
+}
+
 int optimal_grid_resolution(size_t primitive_count) {
   return std::max(1, int(std::lround(3 * std::cbrt(double(primitive_count)))));
 }
@@ -100,6 +115,7 @@ UniformGrid::UniformGrid(const PrimitiveSet& prims, int resolution)
   }
   const size_t bounded = n - unbounded_.size();
   if (resolution == 0) resolution = optimal_grid_resolution(n);
+  requested_resolution_ = std::max(resolution, 1);
   resolution_ = std::clamp(resolution, 1, kMaxResolution);
   if (bounded == 0) {
     voxel_begin_.assign(2, 0);
@@ -127,6 +143,7 @@ UniformGrid::UniformGrid(const PrimitiveSet& prims, int resolution)
 
   const uint64_t budget = std::min<uint64_t>(std::max(kMinReferenceBudget, kReferencesPerPrimitive * bounded),
                                              std::numeric_limits<uint32_t>::max());  // offsets are 32-bit
+  reference_budget_ = budget;
   for (;;) {
     const int r = resolution_;
     for (int a = 0; a < 3; ++a) {
@@ -230,13 +247,20 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range, HitFi
   const auto blocks = [&](const Hit& hit) {
     return !filter || !primitives_.filtered(hit.prim, filter->sees_opaque) || filter->blocks(hit);
   };
+  // A closest hit at exactly the nearest t so far wins only with a lower primitive id, as
+  // with every accelerator; so the range reaches one float past that t once one is found.
+  const auto reach = [&] { return nearest ? next_float(t_max, true) : t_max; };
+  const auto nearer = [&](const Hit& hit) {
+    return !nearest || hit.t < t_max || (hit.t == t_max && hit.prim < nearest->prim);
+  };
   // Test the primitives that live outside the voxels.
   for (const uint32_t prim : unbounded_) {
-    if (auto hit = primitives_.intersect(prim, ray, {t_min, t_max})) {
+    if (auto hit = primitives_.intersect(prim, ray, {t_min, reach()})) {
       if constexpr (kAnyHit) {
         if (blocks(*hit)) return hit;
         continue;
       }
+      if (!nearer(*hit)) continue;
       t_max = hit->t;
       nearest = hit;
     }
@@ -304,16 +328,17 @@ std::optional<Hit> UniformGrid::traverse(const Ray& ray, Interval t_range, HitFi
         std::optional<Hit> hit;
         if (prim < triangle_count_) {
           const auto& c = corners_[prim];
-          if (const auto h = intersect_triangle(watertight, {t_min, t_max}, c[0], c[1], c[2]))
+          if (const auto h = intersect_triangle(watertight, {t_min, reach()}, c[0], c[1], c[2]))
             hit = Hit{h->t, prim, h->b1, h->b2};
         } else {
-          hit = primitives_.intersect_shape(prim, ray, {t_min, t_max});
+          hit = primitives_.intersect_shape(prim, ray, {t_min, reach()});
         }
         if (hit) {
           if constexpr (kAnyHit) {
             if (blocks(*hit)) return hit;
             continue;
           }
+          if (!nearer(*hit)) continue;
           t_max = hit->t;
           t_stop = std::min(t_stop, t_max);
           nearest = hit;

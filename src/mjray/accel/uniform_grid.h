@@ -34,6 +34,8 @@ class UniformGrid final : public Accelerator {
 
   /// Voxels per axis actually built.
   int resolution() const { return resolution_; }
+  /// Why the grid has fewer voxels per axis than asked for; empty when it has them all.
+  std::string resolution_note() const;
   /// The box the voxels tile: the scene bounds, padded (empty for an empty world).
   Bounds3 grid_bounds() const { return prims_.empty() ? Bounds3{} : Bounds3{grid_lo_, grid_hi_}; }
   /// Primitive references over all voxels (a primitive counts once per voxel it is in).
@@ -52,6 +54,8 @@ class UniformGrid final : public Accelerator {
   Vector3 voxel_size_;
   Vector3 inv_voxel_size_;
   int resolution_ = 1;
+  int requested_resolution_ = 1;        ///< as asked for (0 resolved to the optimal size)
+  uint64_t reference_budget_ = 0;       ///< references beyond this halve the resolution
   std::vector<uint32_t> voxel_begin_;   ///< voxel v lists prims_[voxel_begin_[v], voxel_begin_[v+1])
   std::vector<uint32_t> prims_;
   std::vector<uint64_t> occupied_;      ///< one bit per voxel: skips empty voxels in cache

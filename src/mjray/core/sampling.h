@@ -46,4 +46,15 @@ inline Vector3 sample_uniform_sphere(float u1, float u2) {
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+/// A point uniform over the unit disk from two uniform numbers in [0, 1), by Shirley and Chiu's
+/// concentric map (area-preserving; neighbouring (u1, u2) stay neighbours on the disk).
+inline Point2 sample_concentric_disk(float u1, float u2) {
+  const float a = 2 * u1 - 1, b = 2 * u2 - 1;
+  if (a == 0 && b == 0) return {0, 0};
+  constexpr float kQuarterPi = std::numbers::pi_v<float> / 4;
+  if (std::abs(a) > std::abs(b)) return {a * std::cos(kQuarterPi * (b / a)), a * std::sin(kQuarterPi * (b / a))};
+  const float angle = 2 * kQuarterPi - kQuarterPi * (a / b);
+  return {b * std::cos(angle), b * std::sin(angle)};
+}
+
 }  // namespace mjray

@@ -48,9 +48,17 @@ Normal3 unit_cube_normal(const Point3& p) {
 }
 
 Point2 unit_cube_uv(const Point3& p) {
+  // Each face shows the image upright and unmirrored from outside (right × up = the outward
+  // normal): the side faces with +y up; the top with its upper edge at the back (−z) and the
+  // bottom with its upper edge at the front (+z), as the faces of a cross-shaped net folded
+  // around the front face.
   const CubeFace f = unit_cube_face(p);
-  const int a = (f.axis + 1) % 3, b = (f.axis + 2) % 3;
-  return {std::clamp(p[a], 0.f, 1.f), std::clamp(p[b], 0.f, 1.f)};
+  const float x = std::clamp(p.x, 0.f, 1.f), y = std::clamp(p.y, 0.f, 1.f), z = std::clamp(p.z, 0.f, 1.f);
+  switch (f.axis) {
+    case 0: return f.side > 0 ? Point2{1 - z, y} : Point2{z, y};
+    case 1: return f.side > 0 ? Point2{x, 1 - z} : Point2{x, z};
+    default: return f.side > 0 ? Point2{x, y} : Point2{1 - x, y};
+  }
 }
 
 }  // namespace mjray

@@ -3,8 +3,8 @@
 /// by a transform (gr.sphere and gr.nh_sphere, gr.cube and gr.nh_box).
 ///
 /// To add a shape: write `<name>.h/.cpp` with the unit primitive's intersection, a struct
-/// below with `object_bounds()`, `object_bounding_sphere()`, `intersect(object_ray, t_range)`
-/// and `surface(object_point)`,
+/// below with `object_bounds()`, `object_bounding_sphere()`, `intersect(object_ray, t_range)`,
+/// `surface(object_point)` and `uv(surface_point)`,
 /// add it to `Shape`, bind it in `lua/gr_bindings.cpp`, and test it in
 /// `tests/unit/geometry/geometry_test.cpp` (the accelerator oracles then cover it).
 
@@ -22,7 +22,6 @@ namespace mjray {
 struct ShapeSurface {
   Point3 point;    ///< the hit moved exactly onto the surface
   Normal3 normal;  ///< outward, not necessarily unit
-  Point2 uv;
 };
 
 /// A ball holding a shape, in its own frame.
@@ -41,8 +40,9 @@ struct UnitSphere {
   static ShapeSurface surface(const Point3& hit) {
     const Vector3 radial = normalize(Vector3(hit.x, hit.y, hit.z));
     const Point3 p{radial.x, radial.y, radial.z};  // project back onto the surface
-    return {p, unit_sphere_normal(p), unit_sphere_uv(p)};
+    return {p, unit_sphere_normal(p)};
   }
+  static Point2 uv(const Point3& surface_point) { return unit_sphere_uv(surface_point); }
 };
 
 /// The unit cube [0,1]³.
@@ -56,8 +56,9 @@ struct UnitCube {
     Point3 p = hit;
     const CubeFace face = unit_cube_face(p);
     p[face.axis] = face.side > 0 ? 1.f : 0.f;  // onto the face, so that textures see its plane exactly
-    return {p, unit_cube_normal(p), unit_cube_uv(p)};
+    return {p, unit_cube_normal(p)};
   }
+  static Point2 uv(const Point3& surface_point) { return unit_cube_uv(surface_point); }
 };
 
 using Shape = std::variant<UnitSphere, UnitCube>;

@@ -5,9 +5,12 @@
 /// float step away, so that neither the rounding of the hit point nor of the move can leave it
 /// on the wrong side).
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
+#include "mjray/core/float_steps.h"
 #include "mjray/core/ray.h"
 #include "mjray/geometry/surface_interaction.h"
 
@@ -33,8 +36,8 @@ inline Point3 offset_origin(const SurfaceInteraction& si, const Vector3& directi
   Point3 origin = si.point + offset;
   // Round away from the surface: the addition itself may have rounded toward it.
   for (int axis = 0; axis < 3; ++axis) {
-    if (offset[axis] > 0) origin[axis] = std::nextafter(origin[axis], kInfinity);
-    else if (offset[axis] < 0) origin[axis] = std::nextafter(origin[axis], -kInfinity);
+    if (offset[axis] > 0) origin[axis] = next_float(origin[axis], true);
+    else if (offset[axis] < 0) origin[axis] = next_float(origin[axis], false);
   }
   return origin;
 }

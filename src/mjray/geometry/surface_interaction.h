@@ -21,6 +21,7 @@ struct SurfaceInteraction {
   /// nh_sphere/nh_box (whose centre and corner are given there) and meshes.
   Point3 object_point;
   uint32_t material = 0;     ///< index into World::materials
+  uint32_t prim = 0;         ///< the primitive hit
 };
 
 }  // namespace mjray

@@ -56,7 +56,7 @@ struct WatertightRay {
 /// (a hit exactly at max counts), or nothing.
 /// Inline so that accelerators' leaf loops share exactly this arithmetic (and so the same
 /// barycentrics) with `intersect_triangle` below.
-inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, Interval t_range,
+[[gnu::always_inline]] inline std::optional<TriangleHit> intersect_triangle(const WatertightRay& ray, Interval t_range,
                                                      const std::array<float, 3>& p0,
                                                      const std::array<float, 3>& p1,
                                                      const std::array<float, 3>& p2) {

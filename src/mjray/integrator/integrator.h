@@ -10,9 +10,7 @@
 namespace mjray {
 
 /// Rays cast, by kind; each thread keeps its own and they are summed at the end.
-/// Cache-line aligned: each worker thread updates its own on every ray, so neighbours in an
-/// array must not share a line (false sharing would serialise the threads).
-struct alignas(64) RayCounters {
+struct RayCounters {
   uint64_t primary = 0;
   uint64_t secondary = 0;
   uint64_t shadow = 0;
@@ -26,13 +24,33 @@ struct alignas(64) RayCounters {
   uint64_t total() const { return primary + secondary + shadow; }
 };
 
+/// For each light (the first kLights of a scene), the last opaque primitive that blocked a
+/// shadow ray toward it: tested first, since neighbouring shading points are mostly shadowed
+/// by the same thing. It only saves work: no result depends on it.
+struct OccluderCache {
+  static constexpr int kLights = 8;
+  static constexpr uint32_t kNone = ~uint32_t(0);
+  uint32_t prim[kLights] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
+
+  uint32_t* slot(size_t light) { return light < kLights ? &prim[light] : nullptr; }
+};
+
+/// What one worker thread keeps while it traces: its ray counts and caches. Cache-line
+/// aligned: each thread updates its own on every ray, so neighbours in an array must not share
+/// a line (false sharing would serialise the threads).
+struct alignas(64) TraceState {
+  RayCounters rays;
+  OccluderCache occluders;
+};
+
 /// Computes the colour seen along camera rays. Implementations are immutable after
 /// construction and safe to call from many threads at once.
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  /// The linear colour along a primary ray (unit direction); `random` supplies every sample.
-  virtual Color radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const = 0;
+  /// The linear colour along a primary ray (unit direction); `random` supplies every sample,
+  /// `state` is the calling thread's own.
+  virtual Color radiance(const Ray& ray, RandomStream& random, TraceState& state) const = 0;
 };
 
 }  // namespace mjray

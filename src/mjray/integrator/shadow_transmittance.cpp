@@ -16,9 +16,17 @@ class TransmissiveHits final : public HitFilter {
  public:
   static constexpr int kCapacity = 64;
 
-  TransmissiveHits(const PrimitiveSet& prims, const Ray& ray, float t_max) : prims_(prims), ray_(ray), t_max_(t_max) {}
+  TransmissiveHits(const PrimitiveSet& prims, const Ray& ray, float t_max)
+      : HitFilter(true), prims_(prims), ray_(ray), t_max_(t_max) {}
+
+  /// The opaque primitive that blocked the ray, if one did.
+  std::optional<uint32_t> blocker;
 
   bool blocks(const Hit& hit) override {
+    if (!prims_.transmissive(hit.prim)) {
+      blocker = hit.prim;
+      return true;
+    }
     for (std::optional<Hit> crossing = hit; crossing;) {
       if (count_ == kCapacity) return true;
       hits_[size_t(count_++)] = *crossing;
@@ -31,36 +39,40 @@ class TransmissiveHits final : public HitFilter {
 
   /// The hits in order along the ray, each primitive once.
   std::span<const Hit> in_order() {
-    std::sort(hits_.begin(), hits_.begin() + count_,
+    std::sort(hits_, hits_ + count_,
               [](const Hit& a, const Hit& b) { return a.t < b.t || (a.t == b.t && a.prim < b.prim); });
-    const auto end = std::unique(hits_.begin(), hits_.begin() + count_,
+    const auto end = std::unique(hits_, hits_ + count_,
                                  [](const Hit& a, const Hit& b) { return a.prim == b.prim && a.t == b.t; });
-    return {hits_.data(), size_t(end - hits_.begin())};
+    return {hits_, size_t(end - hits_)};
   }
 
  private:
   const PrimitiveSet& prims_;
   const Ray& ray_;
   float t_max_;
-  std::array<Hit, kCapacity> hits_;
+  // Left uninitialised: a shadow ray mostly crosses nothing, and 64 hits are a kilobyte.
+  union Storage {
+    Storage() {}
+    Hit hits[kCapacity];
+  } storage_;
+  Hit* hits_ = storage_.hits;
   int count_ = 0;
 };
 
 }  // namespace
 
-Color shadow_ray_transmittance(const World& world, const Accelerator& accel, const Ray& ray, float t_max) {
-  if (!world.primitives.any_transmissive()) return accel.occluded(ray, t_max) ? Color{} : Color{1, 1, 1};
+ShadowResult shadow_ray_transmittance(const World& world, const Accelerator& accel, const Ray& ray, float t_max) {
   TransmissiveHits hits(world.primitives, ray, t_max);
-  if (accel.occluded(ray, {0, t_max}, hits)) return {};
+  if (accel.occluded(ray, {0, t_max}, hits)) return {{}, hits.blocker};
   Color kept{1, 1, 1};
   const Vector3 wo = normalize(-ray.direction);
   for (const Hit& hit : hits.in_order()) {
-    const SurfaceInteraction si = world.interaction(ray, hit);
+    const SurfaceInteraction si = world.crossing(ray, hit);
     const ShadingFrame frame{wo, face_forward(si.shading_normal, wo), si.geometric_normal};
     kept = kept * shadow_transmittance(world.materials[si.material], frame);
     if (kept.is_black()) break;
   }
-  return kept;
+  return {kept, std::nullopt};
 }
 
 }  // namespace mjray

@@ -9,13 +9,13 @@
 
 namespace mjray {
 
-Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const {
-  ++counters.primary;
-  return trace(ray, Depth{}, random, counters);
+Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, TraceState& state) const {
+  ++state.rays.primary;
+  return trace(ray, Depth{}, random, state);
 }
 
 Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random,
-                               RayCounters& counters) const {
+                               TraceState& state) const {
   const auto found = closest_surface(world_, accel_, ray);
   if (!found) return world_.background_radiance(ray.direction);
   const SurfaceInteraction& si = *found;
@@ -27,78 +27,108 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random
   const LocalShading local = local_shading(material, si);
   // The specular lobes draw their samples first, then direct light: the order is part of
   // the image.
-  const Color specular = specular_light(si, frame, specular_lobes(material, frame), depth, random, counters);
-  return surface_light(si, frame, local, depth.weight, random, counters) + specular;
+  const Color specular = specular_light(si, frame, specular_lobes(material, frame), depth, random, state);
+  return surface_light(si, frame, local, depth.weight, random, state) + specular;
 }
 
 Color WhittedIntegrator::surface_light(const SurfaceInteraction& si, const ShadingFrame& frame,
                                        const LocalShading& local, float weight, RandomStream& random,
-                                       RayCounters& counters) const {
-  const Color direct = direct_light(si, frame, local, random, counters);
-  return indirect_ ? direct + indirect_->radiance(si, frame, local, weight, random, counters) : direct;
+                                       TraceState& state) const {
+  const Color direct = direct_light(si, frame, local, random, state);
+  return indirect_ ? direct + indirect_->radiance(si, frame, local, weight, random, state.rays) : direct;
 }
 
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const ShadingFrame& frame,
                                       const LocalShading& local, RandomStream& random,
-                                      RayCounters& counters) const {
+                                      TraceState& state) const {
   Color result = local.ambient(world_.ambient);
-  for (const Light& light : world_.lights) {
+  for (size_t index = 0; index < world_.lights.size(); ++index) {
+    const Light& light = world_.lights[index];
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
     if (n == 1) {
-      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), counters);
+      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state);
       continue;
     }
+    // When nothing can stand between this point and the light, no sample needs a ray.
+    const bool clear = light_region_clear(si, light);
     Color sum;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const float jitter_s = random.uniform();
         const float jitter_t = random.uniform();
         const Point2 u{(float(i) + jitter_s) / float(n), (float(j) + jitter_t) / float(n)};
-        sum += light_sample(si, frame, local, sample_li(light, si.point, u), counters);
+        sum += light_sample(si, frame, local, sample_li(light, si.point, u), index, state, clear);
       }
     result += sum / float(n * n);
   }
   return result;
 }
 
+bool WhittedIntegrator::light_region_clear(const SurfaceInteraction& si, const Light& light) const {
+  // The rays of every sample must leave from one origin: the light wholly on one side of the
+  // surface, by a clear angle. On the outer side (where the geometric normal points) the
+  // surface itself cannot stand in the way, for a triangle or a convex shape; on the inner
+  // side it is tested like everything else.
+  const std::array<Point3, 4> region = sample_region(light);
+  int in_front = 0;
+  for (const Point3& corner : region) {
+    const Vector3 to = corner - si.point;
+    const float cosine = dot(si.geometric_normal, to) / length(to);
+    if (!(std::abs(cosine) > 1e-3f)) return false;
+    in_front += cosine > 0;
+  }
+  if (in_front != 0 && in_front != 4) return false;
+  const auto pyramid = LightPyramid::make(offset_origin(si, region[0] - si.point), region);
+  constexpr uint32_t kNone = ~uint32_t(0);
+  return pyramid && accel_.region_clear(*pyramid, in_front == 4 ? si.prim : kNone);
+}
+
 Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const ShadingFrame& frame,
                                       const LocalShading& local, const LightSample& sample,
-                                      RayCounters& counters) const {
+                                      size_t light_index, TraceState& state, bool unoccluded) const {
   const Vector3 to_light = sample.position - si.point;
   const float distance = length(to_light);
   if (!(distance > 0)) return {};
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
-  ++counters.shadow;
+  if (unoccluded) return local.phong(frame, l, n_dot_l) * sample.intensity;
+  ++state.rays.shadow;
   const Ray shadow = spawn_ray_to(si, sample.position);
-  if (!world_.primitives.any_transmissive() || !settings_.transmissive_shadows) {
+  // The primitive that blocked the last shadow ray toward this light mostly blocks this one.
+  uint32_t* cached = state.occluders.slot(light_index);
+  if (cached && *cached != OccluderCache::kNone && world_.primitives.intersect(*cached, shadow, {0, kShadowTMax}))
+    return {};
+  // With a caustic photon map glass shadows like any object: the map brings its light.
+  if (!settings_.transmissive_shadows && world_.primitives.any_transmissive()) {
     if (accel_.occluded(shadow, kShadowTMax)) return {};
     return local.phong(frame, l, n_dot_l) * sample.intensity;
   }
   // Through glass: what the transmissive surfaces on the way let pass.
-  const Color kept = shadow_ray_transmittance(world_, accel_, shadow, kShadowTMax);
-  if (kept.is_black()) return {};
-  return local.phong(frame, l, n_dot_l) * sample.intensity * kept;
+  const ShadowResult through = shadow_ray_transmittance(world_, accel_, shadow, kShadowTMax);
+  if (through.blocker && cached) *cached = *through.blocker;
+  if (through.kept.is_black()) return {};
+  if (!world_.primitives.any_transmissive()) return local.phong(frame, l, n_dot_l) * sample.intensity;
+  return local.phong(frame, l, n_dot_l) * sample.intensity * through.kept;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
                                          Depth depth, RandomStream& random,
-                                         RayCounters& counters) const {
+                                         TraceState& state) const {
   // Adaptive depth control: a ray whose colour would change the pixel by less than half an
   // 8-bit step is not worth tracing. Without it, glass that both reflects and refracts at
   // every hit grows a binary tree of 2^(r+f) rays.
   constexpr float kMinWeight = 0.5f / 255;
   if (depth.weight < kMinWeight) return {};
-  ++counters.secondary;
-  return trace(spawn_ray(si, direction), depth, random, counters);
+  ++state.rays.secondary;
+  return trace(spawn_ray(si, direction), depth, random, state);
 }
 
 Color WhittedIntegrator::specular_light(const SurfaceInteraction& si, const ShadingFrame& frame,
                                         const SpecularLobes& lobes, Depth depth, RandomStream& random,
-                                        RayCounters& counters) const {
+                                        TraceState& state) const {
   Color result;
   for (const SpecularLobe& lobe : lobes) {
     const Depth next = depth.after(lobe.kind, lobe.weight);
@@ -106,26 +136,26 @@ Color WhittedIntegrator::specular_light(const SurfaceInteraction& si, const Shad
     // turns that kind of lobe off.
     if (!within_depth(lobe.kind, depth)) {
       if (depth_limit(lobe.kind) > 0)
-        result += lobe.weight * terminal_light(si, lobe.direction, next.weight, random, counters);
+        result += lobe.weight * terminal_light(si, lobe.direction, next.weight, random, state);
       continue;
     }
     // A glossy lobe blurs only the first reflection (as the original): deeper ones are mirrors.
-    if (lobe.samples > 1 && depth.reflection == 0)
-      result += glossy_light(si, frame, lobe, next, random, counters);
+    if (lobe.cos_cone < 1 && depth.reflection == 0)
+      result += glossy_light(si, frame, lobe, next, random, state);
     else
-      result += lobe.weight * trace_secondary(si, lobe.direction, next, random, counters);
+      result += lobe.weight * trace_secondary(si, lobe.direction, next, random, state);
   }
   return result;
 }
 
 Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const Vector3& direction, float weight,
-                                        RandomStream& random, RayCounters& counters) const {
+                                        RandomStream& random, TraceState& state) const {
   constexpr float kMinWeight = 0.5f / 255;  // as trace_secondary's adaptive depth control
   constexpr int kMaxCrossings = 16;
   Color kept{1, 1, 1}, result;
   SurfaceInteraction from = origin;
   for (int crossing = 0; crossing < kMaxCrossings && weight * kept.max_component() >= kMinWeight; ++crossing) {
-    ++counters.secondary;
+    ++state.rays.secondary;
     const Ray ray = spawn_ray(from, direction);
     const auto found = closest_surface(world_, accel_, ray);
     if (!found) return result + kept * world_.background_radiance(direction);
@@ -133,7 +163,7 @@ Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const 
     const Vector3 wo = normalize(-direction);
     const ShadingFrame frame{wo, face_forward(found->shading_normal, wo), found->geometric_normal};
     result += kept * surface_light(*found, frame, local_shading(material, *found), weight * kept.max_component(),
-                                   random, counters);
+                                   random, state);
     if (!transmissive(material)) break;
     kept = kept * shadow_transmittance(material, frame);
     from = *found;
@@ -143,7 +173,7 @@ Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const 
 
 Color WhittedIntegrator::glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame,
                                       const SpecularLobe& lobe, Depth next, RandomStream& random,
-                                      RayCounters& counters) const {
+                                      TraceState& state) const {
   Color sum;
   const int samples = lobe.samples;
   for (int k = 0; k < samples; ++k) {
@@ -153,7 +183,7 @@ Color WhittedIntegrator::glossy_light(const SurfaceInteraction& si, const Shadin
     Vector3 d = sample_cone(lobe.direction, lobe.cos_cone, u1, u2);
     // A direction below the surface falls back to the lobe's axis.
     if (dot(d, si.geometric_normal) * dot(frame.wo, si.geometric_normal) <= 0) d = lobe.direction;
-    sum += trace_secondary(si, d, next, random, counters);
+    sum += trace_secondary(si, d, next, random, state);
   }
   return lobe.weight * sum / float(samples);
 }

@@ -31,7 +31,7 @@ class WhittedIntegrator final : public Integrator {
                     const IndirectLight* indirect = nullptr)
       : world_(world), accel_(accel), settings_(settings), indirect_(indirect) {}
 
-  Color radiance(const Ray& ray, RandomStream& random, RayCounters& counters) const override;
+  Color radiance(const Ray& ray, RandomStream& random, TraceState& state) const override;
 
  private:
   /// Where a ray is in the recursion: bounces of each kind so far, and the weight its
@@ -47,32 +47,36 @@ class WhittedIntegrator final : public Integrator {
     }
   };
 
-  Color trace(const Ray& ray, Depth depth, RandomStream& random, RayCounters& counters) const;
+  Color trace(const Ray& ray, Depth depth, RandomStream& random, TraceState& state) const;
   /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
   Color direct_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                     RandomStream& random, RayCounters& counters) const;
+                     RandomStream& random, TraceState& state) const;
   /// Direct light plus what the IndirectLight adds there; `weight` is the surface's share in
   /// its pixel.
   Color surface_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                      float weight, RandomStream& random, RayCounters& counters) const;
+                      float weight, RandomStream& random, TraceState& state) const;
   /// The Phong reflection of one light sample, or black when it is behind the surface or
-  /// in shadow.
+  /// in shadow (not looked for when `unoccluded` is known).
   Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                     const LightSample& sample, RayCounters& counters) const;
+                     const LightSample& sample, size_t light_index, TraceState& state,
+                     bool unoccluded = false) const;
+  /// Whether every shadow ray from si to the light's sample region surely reaches it (a proof
+  /// by the accelerator; false when it cannot tell). The image is the same either way.
+  bool light_region_clear(const SurfaceInteraction& si, const Light& light) const;
   /// Light arriving along the material's specular lobes, within the depth limits.
   Color specular_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobes& lobes,
-                       Depth depth, RandomStream& random, RayCounters& counters) const;
+                       Depth depth, RandomStream& random, TraceState& state) const;
   /// The mean of a glossy lobe's rays over its cone.
   Color glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobe& lobe,
-                     Depth next, RandomStream& random, RayCounters& counters) const;
+                     Depth next, RandomStream& random, TraceState& state) const;
   /// What a lobe past the -r/-f limit brings: the ray goes on straight through transmissive
   /// surfaces (keeping their shadow transmittance) to the first opaque one, and returns its
   /// local shading (ambient and direct light, no further lobes), or the background.
   Color terminal_light(const SurfaceInteraction& si, const Vector3& direction, float weight, RandomStream& random,
-                       RayCounters& counters) const;
+                       TraceState& state) const;
   /// The light arriving along a secondary ray leaving si.
   Color trace_secondary(const SurfaceInteraction& si, const Vector3& direction, Depth depth,
-                        RandomStream& random, RayCounters& counters) const;
+                        RandomStream& random, TraceState& state) const;
   int depth_limit(LobeKind kind) const {
     return kind == LobeKind::kReflection ? settings_.max_reflection_depth : settings_.max_refraction_depth;
   }

@@ -3,8 +3,12 @@
 #include <cctype>
 #include <system_error>
 
+#include <unistd.h>
+
 #include "mjray/core/error.h"
 #include "mjray/io/atomic_file.h"
+#include "mjray/io/exr_codec.h"
+#include "mjray/io/jpeg_codec.h"
 #include "mjray/io/png_codec.h"
 #include "mjray/io/ppm_codec.h"
 
@@ -20,10 +24,20 @@ std::string png_depths(const EncodeOptions& o) {
   return o.bit_depth == 8 || o.bit_depth == 16 ? std::string()
                                                : "PNG stores 8 or 16 bits per channel, not " + std::to_string(o.bit_depth);
 }
+std::string jpeg_options(const EncodeOptions& o) {
+  if (o.bit_depth != 8) return "JPEG stores 8 bits per channel, not " + std::to_string(o.bit_depth);
+  if (o.jpeg_quality < 1 || o.jpeg_quality > 100) return "JPEG quality must be from 1 to 100, not " + std::to_string(o.jpeg_quality);
+  return "";
+}
+std::string exr_options(const EncodeOptions& o) {
+  return o.bit_depth == 8 ? std::string() : "EXR stores half floats; a bit depth of " + std::to_string(o.bit_depth) + " is for PNG";
+}
 
 constexpr ImageCodec kCodecs[] = {
     {"PNG", {".png", ""}, png_depths, encode_png},
     {"PPM", {".ppm", ""}, only_8bit, encode_ppm},
+    {"JPEG", {".jpg", ".jpeg"}, jpeg_options, encode_jpeg},
+    {"OpenEXR", {".exr", ""}, exr_options, encode_exr},
 };
 
 [[noreturn]] void fail_write(const fs::path& path, const std::string& reason) {
@@ -54,12 +68,18 @@ const ImageCodec& codec_for(const fs::path& path) {
                        writable_extensions() + ")");
 }
 
-void check_image_output(const fs::path& path, const EncodeOptions& options) {
+void check_image_output_format(const fs::path& path, const EncodeOptions& options) {
   const ImageCodec& codec = codec_for(path);
   if (const std::string reason = codec.unsupported(options); !reason.empty()) fail_write(path, reason);
+}
+
+void check_image_output(const fs::path& path, const EncodeOptions& options) {
+  check_image_output_format(path, options);
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(folder, ec)) fail_write(path, "folder '" + folder.string() + "' does not exist");
+  if (fs::is_directory(path, ec)) fail_write(path, "it is a folder");
+  if (::access(folder.c_str(), W_OK) != 0) fail_write(path, "folder '" + folder.string() + "' is not writable");
 }
 
 void write_image(const Image& image, const fs::path& path, const EncodeOptions& options) {

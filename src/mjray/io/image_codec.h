@@ -28,11 +28,15 @@ struct ImageCodec {
 /// 'PATH': …") naming the formats mjray writes when there is none.
 const ImageCodec& codec_for(const std::filesystem::path& path);
 
-/// The extensions mjray writes, for messages: ".png, .ppm".
+/// The extensions mjray writes, for messages: ".png, .ppm, .jpg, .jpeg, .exr".
 std::string writable_extensions();
 
-/// Checks before a render that an image can go to `path` with `options`: a known extension
-/// whose format takes the options, and an existing folder. Throws OutputError naming the path.
+/// Checks that `path` has a known extension whose format takes `options`. Throws OutputError
+/// naming the path.
+void check_image_output_format(const std::filesystem::path& path, const EncodeOptions& options);
+
+/// Checks before a render that an image can go to `path` with `options`: the format (above),
+/// an existing, writable folder, and no folder of that name. Throws OutputError naming the path.
 void check_image_output(const std::filesystem::path& path, const EncodeOptions& options);
 
 /// Encodes the image with its path's codec and writes it atomically (see

@@ -18,14 +18,25 @@ namespace {
 constexpr bool is_blank(char c) { return c == ' ' || c == '\t'; }
 constexpr bool is_eol(char c) { return c == '\n' || c == '\r'; }
 
+/// The statements of the OBJ format (geometry, grouping, display and free-form).
+bool is_obj_keyword(std::string_view keyword) {
+  static constexpr std::string_view kKeywords[] = {
+      "v", "vt", "vn", "vp", "f", "fo", "l", "p", "o", "g", "s", "mg", "mtllib", "usemtl", "usemap", "maplib",
+      "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end", "con",
+      "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech", "call", "csh"};
+  for (const std::string_view k : kKeywords)
+    if (keyword == k) return true;
+  return false;
+}
+
 // One pass over the text with a single cursor; the hot path (v, vn, vt, f lines) never allocates
 // except to grow the output vectors, and never throws unless the input is malformed. Reserving
 // from a pre-count of line prefixes was measured slower (a second pass over the text costs more
 // than the amortised vector growth).
 class ObjParser {
  public:
-  ObjParser(std::string_view text, const std::string& source_name)
-      : p_(text.data()), end_(text.data() + text.size()), source_name_(source_name) {}
+  ObjParser(std::string_view text, const std::string& source_name, ObjSummary* summary)
+      : p_(text.data()), end_(text.data() + text.size()), source_name_(source_name), summary_(summary) {}
 
   TriangleMesh parse() {
     // Skip a UTF-8 byte-order mark, which would otherwise hide the first statement.
@@ -47,6 +58,7 @@ class ObjParser {
       const char* keyword = p_;
       while (p_ != end_ && !is_blank(*p_) && !is_eol(*p_)) ++p_;
       const std::string_view statement(keyword, static_cast<size_t>(p_ - keyword));
+      if (summary_) count(statement);
       if (statement == "v") {
         parse_position();
       } else if (statement == "f" || statement == "fo") {
@@ -109,6 +121,15 @@ class ObjParser {
 
   bool ends_token(const char* q) const {
     return q == end_ || is_blank(*q) || is_eol(*q) || *q == '#' || *q == '\\';
+  }
+
+  void count(std::string_view statement) {
+    ++summary_->statements;
+    if (is_obj_keyword(statement)) return;
+    if (summary_->unknown_statements++ == 0) {
+      summary_->first_unknown = std::string(statement.substr(0, 40));
+      summary_->first_unknown_line = static_cast<int>(std::min<size_t>(line_, std::numeric_limits<int>::max()));
+    }
   }
 
   void parse_position() {
@@ -261,15 +282,30 @@ class ObjParser {
   const std::string& source_name_;
   size_t line_ = 1;
   TriangleMesh mesh_;
+  ObjSummary* summary_;
 };
 
 }  // namespace
 
-TriangleMesh parse_obj(std::string_view text, const std::string& source_name) {
-  return ObjParser(text, source_name).parse();
+TriangleMesh parse_obj(std::string_view text, const std::string& source_name, ObjSummary* summary) {
+  return ObjParser(text, source_name, summary).parse();
 }
 
-TriangleMesh load_obj(const std::filesystem::path& path) {
+std::string check_obj_content(const TriangleMesh& mesh, const ObjSummary& summary, const std::string& name) {
+  const std::string stranger =
+      summary.unknown_statements == 0
+          ? std::string()
+          : "; line " + std::to_string(summary.first_unknown_line) + " starts with '" + summary.first_unknown +
+                "', which is not an OBJ statement: is it an OBJ file?";
+  if (mesh.positions.empty()) throw SceneError(name + ": no vertices ('v x y z' lines) in this OBJ file" + stranger);
+  if (mesh.triangles.empty())
+    throw SceneError(name + ": no faces ('f' lines) in this OBJ file, so it would draw nothing" + stranger);
+  if (2 * summary.unknown_statements <= summary.statements) return "";
+  return name + ": " + std::to_string(summary.unknown_statements) + " of its " + std::to_string(summary.statements) +
+         " statements are not OBJ" + stranger;
+}
+
+TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary) {
   const std::string name = path.string();
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
@@ -293,7 +329,7 @@ TriangleMesh load_obj(const std::filesystem::path& path) {
                      std::string("cannot read OBJ file: ") + std::strerror(errno));
   }
   text.resize(size);
-  return parse_obj(text, name);
+  return parse_obj(text, name, summary);
 }
 
 }  // namespace mjray

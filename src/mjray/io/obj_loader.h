@@ -10,12 +10,24 @@
 
 namespace mjray {
 
+/// How much of a file was OBJ, to tell a file that is not one (counted when asked for).
+struct ObjSummary {
+  size_t statements = 0;          ///< every statement (comments and blank lines aside)
+  size_t unknown_statements = 0;  ///< statements whose keyword OBJ does not have
+  std::string first_unknown;      ///< the first such keyword
+  int first_unknown_line = 0;
+};
+
 /// Reads an OBJ file; throws SceneError naming file and line for malformed input, and a
 /// SceneError naming the file when it cannot be opened. `v x y z` (a 4th `w` is ignored),
 /// `vn` as written (not normalised), `vt u v` (a 3rd component is ignored).
-TriangleMesh load_obj(const std::filesystem::path& path);
+TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary = nullptr);
 
 /// Parses OBJ text; `source_name` is used in error messages.
-TriangleMesh parse_obj(std::string_view text, const std::string& source_name);
+TriangleMesh parse_obj(std::string_view text, const std::string& source_name, ObjSummary* summary = nullptr);
+
+/// For a file a scene draws: throws SceneError("NAME: no vertices ..." / "no faces ...") when
+/// the mesh is empty; returns a warning when most statements are not OBJ, else "".
+std::string check_obj_content(const TriangleMesh& mesh, const ObjSummary& summary, const std::string& name);
 
 }  // namespace mjray

@@ -110,21 +110,23 @@ struct PngReader {
   }
 };
 
-/// Reads the header (after the 8 signature bytes) and asks libpng for 8-bit RGB rows.
-bool read_header(PngReader& r, png_uint_32& width, png_uint_32& height) {
+/// Reads the header (after the 8 signature bytes) and asks libpng for RGB rows of 8 bits, or
+/// of 16 (big-endian) for a 16-bit file when `keep_16`; `bit_depth` says which.
+bool read_header(PngReader& r, png_uint_32& width, png_uint_32& height, bool keep_16, int& bit_depth) {
   if (setjmp(png_jmpbuf(r.png))) return false;
   png_set_read_fn(r.png, &r.io, on_read);
   png_set_sig_bytes(r.png, 8);
   png_read_info(r.png, r.info);
   png_set_expand(r.png);
-  png_set_strip_16(r.png);
+  if (!keep_16) png_set_strip_16(r.png);
   png_set_strip_alpha(r.png);
   png_set_gray_to_rgb(r.png);
   png_set_interlace_handling(r.png);
   png_read_update_info(r.png, r.info);
   width = png_get_image_width(r.png, r.info);
   height = png_get_image_height(r.png, r.info);
-  if (png_get_channels(r.png, r.info) != 3 || png_get_bit_depth(r.png, r.info) != 8)
+  bit_depth = png_get_bit_depth(r.png, r.info);
+  if (png_get_channels(r.png, r.info) != 3 || (bit_depth != 8 && bit_depth != 16))
     png_error(r.png, "unsupported pixel layout");
   return true;
 }
@@ -175,14 +177,15 @@ std::string encode_png(const Image& image, const EncodeOptions& options) {
   return out;
 }
 
-Image decode_png(const fs::path& path, FILE* file, size_t max_pixels) {
+Image decode_png(const fs::path& path, FILE* file, size_t max_pixels, bool keep_16) {
   PngReader r;
   r.io.file = file;
   r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.io, on_error, on_warning);
   if (r.png != nullptr) r.info = png_create_info_struct(r.png);
   if (r.png == nullptr || r.info == nullptr) fail_read(path, "out of memory");
   png_uint_32 width = 0, height = 0;
-  if (!read_header(r, width, height)) fail_read(path, failure(r.io));
+  int bit_depth = 8;
+  if (!read_header(r, width, height, keep_16, bit_depth)) fail_read(path, failure(r.io));
   if (size_t(width) * size_t(height) > max_pixels)
     fail_read(path, "image too large (" + std::to_string(width) + "x" + std::to_string(height) + ")");
   // Compute the least data such an image needs: one bit per pixel and a filter byte per row,
@@ -193,12 +196,42 @@ Image decode_png(const fs::path& path, FILE* file, size_t max_pixels) {
   if (!ec && least_raw / 1032 > file_size + 1024)
     fail_read(path, "file is truncated (" + std::to_string(file_size) + " bytes cannot hold a " +
                         std::to_string(width) + "x" + std::to_string(height) + " image)");
-  const size_t stride = size_t(width) * 3;
+  const size_t stride = size_t(width) * 3 * size_t(bit_depth / 8);
   std::vector<uint8_t> rgb(stride * height);
   std::vector<png_bytep> rows(height);
   for (size_t y = 0; y < height; ++y) rows[y] = rgb.data() + y * stride;
   if (!read_rows(r, rows.data())) fail_read(path, failure(r.io));
-  return image_from_rgb8(rgb.data(), int(width), int(height));
+  if (bit_depth == 8) return image_from_rgb8(rgb.data(), int(width), int(height));
+  Image image{int(width), int(height)};
+  const auto sample = [&](size_t i) { return float((unsigned(rgb[2 * i]) << 8) | rgb[2 * i + 1]) / 65535.0f; };
+  for (size_t i = 0; i < size_t(width) * height; ++i) image.data()[i] = Color(sample(3 * i), sample(3 * i + 1), sample(3 * i + 2));
+  return image;
+}
+
+namespace {
+
+bool read_text(PngReader& r, ImageMetadata& text) {
+  if (setjmp(png_jmpbuf(r.png))) return false;
+  png_set_read_fn(r.png, &r.io, on_read);
+  png_set_sig_bytes(r.png, 8);
+  png_read_info(r.png, r.info);
+  png_textp chunks = nullptr;
+  const int count = png_get_text(r.png, r.info, &chunks, nullptr);
+  for (int i = 0; i < count; ++i) text.emplace_back(chunks[i].key, std::string(chunks[i].text, chunks[i].text_length));
+  return true;
+}
+
+}  // namespace
+
+ImageMetadata decode_png_text(const fs::path& path, FILE* file) {
+  PngReader r;
+  r.io.file = file;
+  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.io, on_error, on_warning);
+  if (r.png != nullptr) r.info = png_create_info_struct(r.png);
+  if (r.png == nullptr || r.info == nullptr) fail_read(path, "out of memory");
+  ImageMetadata text;
+  if (!read_text(r, text)) fail_read(path, failure(r.io));
+  return text;
 }
 
 }  // namespace mjray

@@ -14,8 +14,13 @@ namespace mjray {
 /// tagged sRGB when encoded so, with options.metadata as text chunks. Throws OutputError.
 std::string encode_png(const Image& image, const EncodeOptions& options);
 
-/// Decodes the PNG open in `file` (after its 8 signature bytes): any colour type, 16-bit
-/// reduced to 8, alpha dropped; values v/255. Throws OutputError naming `path`.
-Image decode_png(const std::filesystem::path& path, FILE* file, size_t max_pixels);
+/// Decodes the PNG open in `file` (after its 8 signature bytes): any colour type, alpha
+/// dropped; values v/255, or v/65535 for a 16-bit file with `keep_16` (else reduced to 8 bits).
+/// Throws OutputError naming `path`.
+Image decode_png(const std::filesystem::path& path, FILE* file, size_t max_pixels, bool keep_16 = false);
+
+/// The text chunks before the pixels of the PNG open in `file` (after its signature), as
+/// encode_png writes options.metadata. Throws OutputError naming `path`.
+ImageMetadata decode_png_text(const std::filesystem::path& path, FILE* file);
 
 }  // namespace mjray

@@ -1,6 +1,7 @@
 #include "mjray/io/ppm_codec.h"
 
 #include <cctype>
+#include <algorithm>
 #include <cerrno>
 #include <system_error>
 #include <vector>
@@ -39,7 +40,16 @@ bool read_field(FILE* file, long& value) {
 }  // namespace
 
 std::string encode_ppm(const Image& image, const EncodeOptions& options) {
-  std::string out = "P6\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n255\n";
+  std::string out = "P6\n";
+  for (const auto& [key, value] : options.metadata) {
+    size_t start = 0;
+    while (start < value.size()) {
+      const size_t end = std::min(value.find('\n', start), value.size());
+      out += "# " + key + ": " + value.substr(start, end - start) + "\n";
+      start = end + 1;
+    }
+  }
+  out += std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n255\n";
   out.reserve(out.size() + image.pixels().size() * 3);
   for (const Color& c : image.pixels()) {
     out += char(to_8bit(c.r, options.gamma));
@@ -47,6 +57,26 @@ std::string encode_ppm(const Image& image, const EncodeOptions& options) {
     out += char(to_8bit(c.b, options.gamma));
   }
   return out;
+}
+
+ImageMetadata decode_ppm_comments(FILE* file) {
+  ImageMetadata text;
+  if (std::fseek(file, 2, SEEK_SET) != 0) return text;
+  int c = std::getc(file);
+  while (c == '#' || std::isspace(c)) {
+    if (c == '#') {
+      std::string line;
+      for (c = std::getc(file); c != '\n' && c != EOF; c = std::getc(file)) line += char(c);
+      const size_t colon = line.find(": ");
+      if (line.size() > 1 && line[0] == ' ' && colon != std::string::npos) {
+        const std::string key = line.substr(1, colon - 1), value = line.substr(colon + 2) + "\n";
+        if (!text.empty() && text.back().first == key) text.back().second += value;
+        else text.emplace_back(key, value);
+      }
+    }
+    c = std::getc(file);
+  }
+  return text;
 }
 
 Image decode_ppm(const fs::path& path, FILE* file, size_t max_pixels) {

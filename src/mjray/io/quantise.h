@@ -19,6 +19,9 @@ enum class OutputGamma {
 /// The sRGB encoding of a linear value in [0, 1].
 inline float srgb_encode(float v) { return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f; }
 
+/// The linear value of an sRGB-encoded value in [0, 1].
+inline float srgb_decode(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
+
 /// Quantises a linear value to 8 bits: clamp to [0,1], optional sRGB encoding, round to
 /// nearest (v·255 + 0.5). NaN becomes 0.
 inline uint8_t to_8bit(float linear, OutputGamma gamma) {
@@ -45,6 +48,15 @@ inline Image image_from_rgb8(const uint8_t* rgb, int width, int height) {
       image.at(x, y) = Color(float(p[0]) / 255.0f, float(p[1]) / 255.0f, float(p[2]) / 255.0f);
     }
   return image;
+}
+
+/// Decodes an image read from an 8-bit sRGB file (values v/255) to linear values, in place.
+inline void decode_srgb_8bit(Image& image) {
+  float linear[256];
+  for (int v = 0; v < 256; ++v) linear[v] = srgb_decode(float(v) / 255.0f);
+  const auto decode = [&](float value) { return linear[int(std::clamp(value, 0.0f, 1.0f) * 255.0f + 0.5f)]; };
+  Color* pixels = image.data();
+  for (size_t i = 0; i < image.pixels().size(); ++i) pixels[i] = Color(decode(pixels[i].r), decode(pixels[i].g), decode(pixels[i].b));
 }
 
 }  // namespace mjray

@@ -1,5 +1,8 @@
 #include "mjray/job/job_fingerprint.h"
 
+#include "mjray/job/job_view.h"
+
+#include <charconv>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -30,6 +33,13 @@ std::string number(double value) {
   return text;
 }
 
+/// The shortest text that reads back as `value`.
+std::string float_text(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  return std::string(text, end);
+}
+
 std::map<std::string, std::string> lines_of(const std::string& text) {
   std::map<std::string, std::string> lines;
   std::istringstream in(text);
@@ -42,14 +52,21 @@ std::map<std::string, std::string> lines_of(const std::string& text) {
 
 }  // namespace
 
-std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& o) {
-  const RenderJob& job = scene.jobs[index];
-  std::string text;
+JobFingerprints::JobFingerprints(const SceneDescription& scene, const JobOptions& options)
+    : scene_(scene), options_(options) {
+  inputs_ = "scene " + scene.script.filename().string() + "=" + file_hash(scene.script) + "\n";
+  for (const auto& input : scene.inputs) inputs_ += "file " + input.string() + "=" + file_hash(input) + "\n";
+  for (const auto& [name, value] : scene.defines) inputs_ += "-D " + name + "=" + value + "\n";
+}
+
+std::string JobFingerprints::of(size_t index) const {
+  const RenderJob& job = scene_.jobs[index];
+  const JobOptions& o = options_;
+  std::string text = inputs_;
   const auto line = [&](const std::string& name, const std::string& value) { text += name + "=" + value + "\n"; };
-  line("scene " + scene.script.filename().string(), file_hash(scene.script));
-  for (const auto& input : scene.inputs) line("file " + input.string(), file_hash(input));
-  line("gr.render call", std::to_string(index + 1) + " of " + std::to_string(scene.jobs.size()));
-  line("size", std::to_string(job.width) + "x" + std::to_string(job.height));
+  line("gr.render call", std::to_string(index + 1) + " of " + std::to_string(scene_.jobs.size()));
+  const ImageSize size = job_image_size(job, o.view);
+  line("size", std::to_string(size.width) + "x" + std::to_string(size.height));
   line("transform order", job.post_multiplied ? "post" : "pre");
   line("-r", std::to_string(o.integrator.max_reflection_depth));
   line("-f", std::to_string(o.integrator.max_refraction_depth));
@@ -62,7 +79,22 @@ std::string job_fingerprint(const SceneDescription& scene, size_t index, const J
   if (o.photons.caustics()) line("--caustics", std::to_string(o.photons.caustic_photons));
   if (o.photons.global_illumination()) line("--gi", std::to_string(o.photons.global_photons));
   line("tile size", std::to_string(o.render.tile_size));
+  line("--gamma", o.outputs.encoding.gamma == OutputGamma::kSrgb ? "srgb" : "linear");  // decodes textures too
+  line("--spp", std::to_string(o.render.samples_per_pixel));
+  const CameraDescription camera = job_camera(job, o.view);
+  line("lens", camera.aperture_radius > 0 ? "aperture " + float_text(camera.aperture_radius) + ", focus " + float_text(camera.focus_distance)
+                                          : "pinhole");
+  const auto& crop = o.render.crop;
+  line("--crop", crop ? std::to_string(crop->x0) + "," + std::to_string(crop->y0) + "," + std::to_string(crop->x1) + "," +
+                            std::to_string(crop->y1)
+                      : "whole image");
+  line("--bit-depth", std::to_string(o.outputs.encoding.bit_depth));
+  line("--jpeg-quality", std::to_string(o.outputs.encoding.jpeg_quality));
   return text;
+}
+
+std::string job_fingerprint(const SceneDescription& scene, size_t index, const JobOptions& options) {
+  return JobFingerprints(scene, options).of(index);
 }
 
 std::string fingerprint_difference(const std::string& saved, const std::string& current) {

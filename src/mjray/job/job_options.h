@@ -16,7 +16,24 @@ namespace mjray {
 struct OutputOptions {
   std::optional<std::filesystem::path> output;  ///< --output: the file of the scene's only image
   std::optional<std::filesystem::path> outdir;  ///< --outdir: the folder of every image
+  /// Images the script names must resolve (links and ".." resolved) inside the script's
+  /// folder tree or the working directory's; off with --unsafe-lua.
+  bool confine_script_outputs = true;
   EncodeOptions encoding;
+};
+
+/// What the command line changes about every job's camera and image size.
+struct ViewOptions {
+  std::optional<float> aperture_radius;  ///< --aperture: the thin lens's radius, over gr.lens's
+  std::optional<float> focus_distance;   ///< --focus-distance: over gr.lens's
+  std::optional<int> width, height;      ///< --size WxH: over gr.render's, same camera (vertical field kept)
+};
+
+/// --frames A-B:STEP: the gr.render calls to render, 1-based in script order.
+struct FrameRange {
+  int first = 1;
+  std::optional<int> last;  ///< unset: the last call
+  int step = 1;
 };
 
 /// The options of every job of one run.
@@ -24,8 +41,10 @@ struct JobOptions {
   AcceleratorOptions accel;
   IntegratorSettings integrator;
   PhotonSettings photons;  ///< --caustics, --gi
-  RenderSettings render;
+  RenderSettings render;  ///< with the --crop window (render.crop)
   OutputOptions outputs;
+  ViewOptions view;
+  std::optional<FrameRange> frames;  ///< unset: every gr.render call
 };
 
 }  // namespace mjray

@@ -1,11 +1,53 @@
 #include "mjray/job/job_outputs.h"
 
+#include <map>
 #include <system_error>
 
 #include "mjray/io/image_codec.h"
 
 namespace mjray {
 namespace fs = std::filesystem;
+
+namespace {
+
+/// The path with links and ".." resolved as far as it exists.
+fs::path resolved(const fs::path& path) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(path, ec);
+  const fs::path canonical = fs::weakly_canonical(absolute, ec);
+  return ec ? absolute.lexically_normal() : canonical;
+}
+
+bool is_within(const fs::path& path, const fs::path& root) {
+  auto p = path.begin();
+  for (auto r = root.begin(); r != root.end(); ++r, ++p) {
+    if (r->empty()) continue;  // the trailing "" of "dir/"
+    if (p == path.end() || *p != *r) return false;
+  }
+  return true;
+}
+
+/// Creates a folder the command line named; throws OutputError(prefix + reason) when it cannot.
+void create_folder(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (ec) throw OutputError(prefix + ec.message());
+}
+
+/// Refuses a script-named output outside the script's folder tree and the working directory's.
+void check_confined(const SceneDescription& scene, size_t index, const fs::path& path) {
+  const fs::path target = resolved(path);
+  const fs::path scene_folder = resolved(fs::absolute(scene.script).parent_path());
+  const fs::path working_folder = resolved(fs::current_path());
+  if (is_within(target, scene_folder) || is_within(target, working_folder)) return;
+  throw SceneError(scene.jobs[index].where,
+                   "gr.render: '" + scene.jobs[index].output.string() + "' resolves to '" + target.string() +
+                       "', outside the scene's folder '" + scene_folder.string() + "' and the working directory '" +
+                       working_folder.string() + "'; a script may write images only inside those (choose the place with "
+                       "--output or --outdir, or run mjray with --unsafe-lua to allow it)");
+}
+
+}  // namespace
 
 fs::path output_path(const SceneDescription& scene, size_t index, const OutputOptions& options) {
   const RenderJob& job = scene.jobs[index];
@@ -15,28 +57,51 @@ fs::path output_path(const SceneDescription& scene, size_t index, const OutputOp
   return fs::absolute(scene.script).parent_path() / job.output;
 }
 
-void check_outputs(const SceneDescription& scene, const OutputOptions& options) {
-  if (options.output && scene.jobs.size() > 1)
+std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options) {
+  std::vector<size_t> every_job(scene.jobs.size());
+  for (size_t i = 0; i < every_job.size(); ++i) every_job[i] = i;
+  return check_outputs(scene, options, every_job);
+}
+
+std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options,
+                                       const std::vector<size_t>& jobs) {
+  if (options.output && jobs.size() > 1)
     throw SceneError(scene.script.string() + ": --output names one file but the scene renders " +
-                     std::to_string(scene.jobs.size()) + " images; use --outdir");
-  if (options.outdir) {
-    std::error_code ec;
-    fs::create_directories(*options.outdir, ec);
-    if (ec) throw OutputError("cannot create the output folder '" + options.outdir->string() + "': " + ec.message());
-  }
-  for (size_t i = 0; i < scene.jobs.size(); ++i) {
+                     std::to_string(jobs.size()) + " images; use --outdir");
+  const bool named_by_script = !options.output && !options.outdir;
+  for (const size_t i : jobs) {
     const fs::path path = output_path(scene, i, options);
     check_not_an_input(scene, path, scene.jobs[i].where, "gr.render");
-    if (options.output) {
-      check_image_output(path, options.encoding);  // the command line's mistake, not the script's
+    if (!named_by_script) {
+      check_image_output_format(path, options.encoding);  // the command line's mistake, not the script's
       continue;
     }
     try {
+      if (options.confine_script_outputs) check_confined(scene, i, path);
       check_image_output(path, options.encoding);
     } catch (const OutputError& e) {
       throw SceneError(scene.jobs[i].where, std::string("gr.render: ") + e.what());
     }
   }
+  // Folders named on the command line are made once every other check has passed.
+  if (options.outdir) create_folder(*options.outdir, "cannot create the output folder '" + options.outdir->string() + "': ");
+  if (options.output && options.output->has_parent_path())
+    create_folder(options.output->parent_path(), "cannot write '" + options.output->string() + "': cannot create its folder '" +
+                                                     options.output->parent_path().string() + "': ");
+  if (options.output) check_image_output(*options.output, options.encoding);
+
+  std::vector<std::string> warnings;
+  std::map<fs::path, size_t> first_writer;
+  for (const size_t i : jobs) {
+    const fs::path path = output_path(scene, i, options);
+    const auto [it, first] = first_writer.emplace(resolved(path), i);
+    if (first) continue;
+    warnings.push_back(scene.jobs[i].where.to_string() + ": gr.render writes '" + path.string() +
+                       "', which the gr.render at " + scene.jobs[it->second].where.to_string() +
+                       " writes too; the later image replaces the earlier" +
+                       (options.outdir ? " (--outdir keeps only the file name of each gr.render output)" : ""));
+  }
+  return warnings;
 }
 
 void check_not_an_input(const SceneDescription& scene, const fs::path& output, const FileLocation& where,

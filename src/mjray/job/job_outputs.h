@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "mjray/core/error.h"
 #include "mjray/job/job_options.h"
@@ -15,10 +16,16 @@ namespace mjray {
 std::filesystem::path output_path(const SceneDescription& scene, size_t index, const OutputOptions& options);
 
 /// Checks every job's output before a pixel is traced: --output with one image only, a
-/// format mjray writes that takes the encoding options, an existing folder (creating
-/// --outdir), and no output that would replace the script or a file it read. Throws
-/// SceneError or OutputError with the gr.render call's location.
-void check_outputs(const SceneDescription& scene, const OutputOptions& options);
+/// format mjray writes that takes the encoding options, no output that would replace the
+/// script or a file it read; for paths the script names, a place inside the script's folder
+/// tree or the working directory's (unless confine_script_outputs is off) and an existing,
+/// writable folder (never created). Then creates the folders the command line named
+/// (--outdir, the folder of --output). Throws SceneError (with the gr.render call's location)
+/// or OutputError. Returns warnings: images that a later gr.render overwrites.
+std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options);
+/// check_outputs of the jobs `jobs` only (indices into scene.jobs, e.g. those --frames selects).
+std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options,
+                                       const std::vector<size_t>& jobs);
 
 /// Throws SceneError("WHERE: WHAT would overwrite 'FILE', which the scene reads ...") when
 /// `output` is the script or one of scene.inputs (compared as canonical paths, so links and

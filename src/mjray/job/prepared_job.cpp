@@ -1,8 +1,10 @@
 #include "mjray/job/prepared_job.h"
 
+#include "mjray/accel/uniform_grid.h"
 #include "mjray/integrator/photon/photon_light.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/job/job_outputs.h"
+#include "mjray/job/job_view.h"
 #include "mjray/render/tile_render.h"
 #include "mjray/scene/flatten.h"
 
@@ -10,10 +12,14 @@ namespace mjray {
 
 PreparedJob::PreparedJob(const SceneDescription& scene, size_t index, const JobOptions& options)
     : job_(scene.jobs.at(index)),
+      size_(job_image_size(job_, options.view)),
       output_(output_path(scene, index, options.outputs)),
       world_(flatten(job_, &warnings_)),
       accel_(make_accelerator(world_.primitives, options.accel)),
-      camera_(job_.camera, job_.width, job_.height) {
+      camera_(job_camera(job_, options.view), size_.width, size_.height) {
+  if (const auto* grid = dynamic_cast<const UniformGrid*>(accel_.get())) {
+    if (std::string note = grid->resolution_note(); !note.empty()) warnings_.push_back(std::move(note));
+  }
   build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start_).count();
   IntegratorSettings settings = options.integrator;
   const PhotonSettings& photons = options.photons;

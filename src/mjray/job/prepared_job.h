@@ -9,11 +9,12 @@
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/integrator/indirect_light.h"
 #include "mjray/integrator/integrator.h"
 #include "mjray/integrator/photon/photon_maps.h"
 #include "mjray/job/job_options.h"
+#include "mjray/job/job_view.h"
 #include "mjray/scene/scene_description.h"
 #include "mjray/scene/world.h"
 
@@ -27,14 +28,15 @@ class PreparedJob {
   PreparedJob& operator=(const PreparedJob&) = delete;
 
   const RenderJob& description() const { return job_; }
-  int width() const { return job_.width; }
-  int height() const { return job_.height; }
+  /// The image size: --size, else gr.render's (a crop renders a window of it).
+  int width() const { return size_.width; }
+  int height() const { return size_.height; }
   const std::filesystem::path& output() const { return output_; }
   const World& world() const { return world_; }
   const Accelerator& accelerator() const { return *accel_; }
-  const PinholeCamera& camera() const { return camera_; }
+  const Camera& camera() const { return camera_; }
   const Integrator& integrator() const { return *integrator_; }
-  /// flatten's warnings ("file:line: text").
+  /// flatten's warnings ("file:line: text"), then the accelerator's (a grid smaller than asked).
   const std::vector<std::string>& warnings() const { return warnings_; }
   /// Seconds spent flattening and building the accelerator.
   double build_seconds() const { return build_seconds_; }
@@ -43,12 +45,13 @@ class PreparedJob {
 
  private:
   const RenderJob& job_;
+  ImageSize size_;
   std::filesystem::path output_;
   std::vector<std::string> warnings_;
   std::chrono::steady_clock::time_point build_start_ = std::chrono::steady_clock::now();
   World world_;
   std::unique_ptr<Accelerator> accel_;
-  PinholeCamera camera_;
+  Camera camera_;
   std::unique_ptr<PhotonMaps> photons_;
   std::unique_ptr<IndirectLight> indirect_;
   std::unique_ptr<Integrator> integrator_;

@@ -1,6 +1,8 @@
 #pragma once
 /// gr.arealight: a parallelogram light, sampled with jittered shadow rays for soft shadows.
 
+#include <array>
+
 #include "mjray/core/sampling.h"
 #include "mjray/light/light_sample.h"
 
@@ -34,6 +36,8 @@ struct AreaLight {
   /// The point at parameters u, uniform over the parallelogram, with the whole light's
   /// intensity (the mean over the points is the light).
   EmissionPoint emission_point(Point2 u) const { return {point_at(u.u, u.v), colour}; }
+  /// The parallelogram its samples lie in, corners in order around it.
+  std::array<Point3, 4> sample_region() const { return {corner, corner + edge1, corner + edge1 + edge2, corner + edge2}; }
   /// Total flux, 4π · colour (before falloff).
   Color power() const { return isotropic_power(colour); }
 };

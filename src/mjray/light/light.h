@@ -5,6 +5,7 @@
 ///   - `int samples_per_axis(int requested)`: how many samples along each axis of the -s
 ///     grid it needs (1 for a point);
 ///   - `LightSample sample_li(receiver, u)`: the point at u ∈ [0,1)² and the light from it;
+///   - `std::array<Point3, 4> sample_region()`: the parallelogram all those points lie in;
 ///   - `EmittedRay sample_le(u_position, u_direction)`, `EmissionPoint emission_point(u)` and
 ///     `Color power()`: emission, for transports that start at lights;
 ///   - `float attenuation(float d)`: the falloff 1 / (c0 + c1·d + c2·d²) at distance d.
@@ -26,6 +27,9 @@ inline int samples_per_axis(const Light& light, int requested) {
 }
 inline LightSample sample_li(const Light& light, const Point3& receiver, Point2 u) {
   return std::visit([&](const auto& l) { return l.sample_li(receiver, u); }, light);
+}
+inline std::array<Point3, 4> sample_region(const Light& light) {
+  return std::visit([](const auto& l) { return l.sample_region(); }, light);
 }
 inline EmittedRay sample_le(const Light& light, Point2 u_position, Point2 u_direction) {
   return std::visit([&](const auto& l) { return l.sample_le(u_position, u_direction); }, light);

@@ -1,6 +1,8 @@
 #pragma once
 /// gr.light: a point light with quadratic falloff.
 
+#include <array>
+
 #include "mjray/core/sampling.h"
 #include "mjray/light/light_sample.h"
 
@@ -28,6 +30,8 @@ struct PointLight {
   }
   /// The light's position and intensity (u is unused).
   EmissionPoint emission_point(Point2 /*u*/) const { return {position, colour}; }
+  /// Where its samples lie: the position (four times, for the parallelogram shape of lights).
+  std::array<Point3, 4> sample_region() const { return {position, position, position, position}; }
   /// Total flux, 4π · colour (before falloff).
   Color power() const { return isotropic_power(colour); }
 };

@@ -11,6 +11,7 @@ extern "C" {
 
 #include "mjray/io/obj_loader.h"
 #include "mjray/io/path_resolver.h"
+#include "mjray/lua/extended_mesh_tables.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
 
@@ -80,9 +81,10 @@ int gr_arealight(lua_State* L) {
   const char* fn = "gr.arealight";
   AreaLight light;
   light.corner = arg_point(L, 1, fn, "position");
-  light.colour = arg_color(L, 2, fn, "colour");
+  light.colour = arg_light_colour(L, 2, fn, "colour");
   const auto falloff = arg_tuple3(L, 3, fn, "falloff");
   for (int i = 0; i < 3; ++i) light.falloff[i] = float(falloff[size_t(i)]);
+  if (falloff[1] == 0 && falloff[2] == 0) warn_if_0_to_255(L, light.colour, fn, "colour (with no distance falloff)");
   light.edge1 = arg_point(L, 4, fn, "corner1") - light.corner;
   light.edge2 = arg_point(L, 5, fn, "corner2") - light.corner;
   if (!(length(cross(light.edge1, light.edge2)) > 0))
@@ -97,19 +99,32 @@ int read_extended_obj(lua_State* L) {
   const auto path = resolve_input(name, context(L).script_dir);
   if (!path) throw ArgumentError("read_extended_obj: cannot find '" + name + "'");
   record_input(L, *path);
-  push_shared(L, std::make_shared<const TriangleMesh>(load_obj(*path)), kObjDataType);
+  std::shared_ptr<const TriangleMesh> mesh;
+  try {
+    mesh = load_checked_obj(L, *path);
+  } catch (const SceneError& e) {
+    throw ArgumentError(std::string("read_extended_obj: ") + e.what());
+  }
+  push_shared(L, std::move(mesh), kObjDataType);
   return 1;
 }
 
 /// gr.extendedmesh(name, use_uvs, read_extended_obj('file.obj')): a mesh whose vertex
 /// normals are interpolated (Phong shading) and whose UVs are kept when use_uvs is true.
+/// The mesh data is the built-in reader's, or the tables a scene's own reader returns.
 int gr_extendedmesh(lua_State* L) {
   const char* fn = "gr.extendedmesh";
   const std::string name = arg_string(L, 1, fn, "name");
   const bool use_uvs = lua_toboolean(L, 2);
-  auto* data = test_shared<const TriangleMesh>(L, 3, kObjDataType);
-  if (!data) bad_argument(L, fn, 3, "mesh data", "the result of read_extended_obj('file.obj')");
-  std::shared_ptr<const TriangleMesh> mesh = *data;
+  std::shared_ptr<const TriangleMesh> mesh;
+  if (auto* data = test_shared<const TriangleMesh>(L, 3, kObjDataType)) {
+    mesh = *data;
+  } else if (lua_type(L, 3) == LUA_TTABLE) {
+    mesh = read_extended_mesh_tables(L, 3, fn);
+  } else {
+    bad_argument(L, fn, 3, "mesh data",
+                 "the result of read_extended_obj('file.obj'), or a table of positions, normals, uvs and faces");
+  }
   if (!use_uvs && !mesh->uvs.empty()) {
     auto copy = std::make_shared<TriangleMesh>(*mesh);
     copy->uvs.clear();
@@ -117,9 +132,9 @@ int gr_extendedmesh(lua_State* L) {
       for (auto& corner : triangle) corner.uv = -1;
     mesh = std::move(copy);
   }
-  // The original project's scenes, like old-skeleton ones, compose transforms post-multiplied.
-  context(L).saw_table_mesh = true;
   auto node = std::make_shared<LuaNode>();
+  // The original project's scenes, like old-skeleton ones, compose transforms post-multiplied.
+  node->old_skeleton_geometry = "the gr.extendedmesh";
   node->name = name;
   node->where = caller_location(L);
   node->mesh = std::move(mesh);

@@ -16,7 +16,7 @@ extern "C" {
 #include <lua.h>
 }
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/io/obj_loader.h"
 #include "mjray/io/path_resolver.h"
 #include "mjray/lua/lua_arguments.h"
@@ -121,7 +121,7 @@ std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::string& n
   const auto key = std::filesystem::weakly_canonical(*path);
   auto& cached = ctx.mesh_cache[key];
   try {
-    if (!cached) cached = std::make_shared<TriangleMesh>(load_obj(*path));
+    if (!cached) cached = load_checked_obj(L, *path);
   } catch (const SceneError& e) {
     // "OBJFILE:LINE: problem" becomes "scene.lua:LINE: gr.mesh: OBJFILE:LINE: problem".
     throw ArgumentError(std::string(fn) + ": " + e.what());
@@ -137,12 +137,14 @@ int gr_mesh(lua_State* L) {
   } else if (lua_type(L, 2) == LUA_TTABLE) {
     if (lua_type(L, 3) != LUA_TTABLE) bad_argument(L, fn, 3, "faces", "a table of faces");
     mesh = table_mesh(L, fn);
-    context(L).saw_table_mesh = true;
   } else {
     bad_argument(L, fn, 2, "mesh", "an OBJ file name, or a vertex table followed by a face table");
   }
+  const bool from_tables = lua_type(L, 2) == LUA_TTABLE;
   new_node(L, fn);
-  (*test_shared<LuaNode>(L, -1, kNodeType))->mesh = std::move(mesh);
+  LuaNode& node = **test_shared<LuaNode>(L, -1, kNodeType);
+  node.mesh = std::move(mesh);
+  if (from_tables) node.old_skeleton_geometry = "the table-form gr.mesh";
   return 1;
 }
 
@@ -205,9 +207,10 @@ int gr_light(lua_State* L) {
   const char* fn = "gr.light";
   PointLight light;
   light.position = arg_point(L, 1, fn, "position");
-  light.colour = arg_color(L, 2, fn, "colour");
+  light.colour = arg_light_colour(L, 2, fn, "colour");
   const auto falloff = arg_tuple3(L, 3, fn, "falloff");
   for (int i = 0; i < 3; ++i) light.falloff[i] = float(falloff[size_t(i)]);
+  if (falloff[1] == 0 && falloff[2] == 0) warn_if_0_to_255(L, light.colour, fn, "colour (with no distance falloff)");
   push_shared(L, std::make_shared<Light>(light), kLightType);
   return 1;
 }
@@ -266,7 +269,7 @@ class Snapshot {
 };
 
 /// Checks the camera here so that the error names the gr.render line; the tests mirror
-/// PinholeCamera's, which stays the final word.
+/// Camera's, which stays the final word.
 void check_camera(const RenderJob& job) {
   const CameraDescription& c = job.camera;
   // Scaled to a largest component of 1 first, so that huge or tiny vectors square safely.
@@ -280,10 +283,39 @@ void check_camera(const RenderJob& job) {
   if (!(length(up_ortho) > 1e-6f * length(up)))
     throw ArgumentError("gr.render: the up vector is parallel to the view direction");
   try {
-    PinholeCamera(c, job.width, job.height);
+    Camera(c, job.width, job.height);
   } catch (const SceneError& e) {
     throw ArgumentError(std::string("gr.render: ") + e.what());
   }
+}
+
+/// The first node under `root` (depth first, each node once) made by old-skeleton geometry.
+const LuaNode* find_old_skeleton_geometry(const LuaNode& root) {
+  std::vector<const LuaNode*> pending = {&root};
+  std::set<const LuaNode*> seen;
+  while (!pending.empty()) {
+    const LuaNode* node = pending.back();
+    pending.pop_back();
+    if (!seen.insert(node).second) continue;
+    if (node->old_skeleton_geometry) return node;
+    for (auto it = node->children.rbegin(); it != node->children.rend(); ++it) pending.push_back(it->get());
+  }
+  return nullptr;
+}
+
+/// The automatic rule: post-multiplied for the whole script when the graph its first
+/// gr.render draws holds a table-form gr.mesh or a gr.extendedmesh, else pre-multiplied.
+bool automatic_transform_order(lua_State* L, const std::shared_ptr<LuaNode>& root, const FileLocation& where) {
+  LoaderContext& ctx = context(L);
+  if (ctx.post_multiply) return *ctx.post_multiply;
+  const LuaNode* found = find_old_skeleton_geometry(*root);
+  ctx.post_multiply = found != nullptr;
+  if (found)
+    ctx.description->notes.push_back(
+        where.to_string() + ": node transforms compose post-multiplied (M = M·T, the old course skeleton's order) for "
+        "every gr.render of this script, because this scene holds " + found->old_skeleton_geometry + " '" +
+        found->name + "' made at " + found->where.to_string() + "; --transform-order pre overrides");
+  return found != nullptr;
 }
 
 int gr_render(lua_State* L) {
@@ -313,6 +345,9 @@ int gr_render(lua_State* L) {
   job.camera.view = arg_vector(L, 6, fn, "view");
   job.camera.up = arg_vector(L, 7, fn, "up");
   job.camera.fovy_degrees = float(arg_number(L, 8, fn, "fovy"));
+  job.camera.aperture_radius = ctx.aperture_radius;
+  job.camera.focus_distance = ctx.focus_distance;
+  job.background = ctx.background;
   job.ambient = arg_color(L, 9, fn, "ambient");
   if (lua_type(L, 10) != LUA_TTABLE) bad_argument(L, fn, 10, "lights", "a table of lights");
   const auto light_count = lua_Integer(lua_rawlen(L, 10));
@@ -328,7 +363,7 @@ int gr_render(lua_State* L) {
   check_camera(job);
 
   bool post = ctx.options.transform_order == TransformOrder::kPost;
-  if (ctx.options.transform_order == TransformOrder::kAuto) post = ctx.saw_table_mesh;
+  if (ctx.options.transform_order == TransformOrder::kAuto) post = automatic_transform_order(L, root, job.where);
   job.root = Snapshot(post).copy(root);
   job.post_multiplied = post;
   ctx.description->jobs.push_back(std::move(job));
@@ -382,6 +417,7 @@ void register_gr(lua_State* L) {
   luaL_newlib(L, gr_functions);
   lua_setglobal(L, "gr");
   register_textures(L);
+  register_view(L);
 }
 
 }  // namespace mjray::lua

@@ -9,7 +9,7 @@ namespace mjray::lua {
 
 // --- argument readers (throw ArgumentError; `guarded` adds the caller's file:line) --------
 
-/// How the value at `index` reads in a message: "nothing", "nil", "a number", "the string 'x'",
+/// How the value at `index` reads in a message: "nothing", "nil", "the number 2.5", "the string 'x'",
 /// "an empty table", "a table of 2 values", "a gr.light".
 std::string describe(lua_State* L, int index) {
   index = lua_absindex(L, index);
@@ -18,6 +18,8 @@ std::string describe(lua_State* L, int index) {
       return "nothing";
     case LUA_TNIL:
       return "nil";
+    case LUA_TNUMBER:
+      return "the number " + (std::isnan(lua_tonumber(L, index)) ? std::string("nan") : format_number(lua_tonumber(L, index)));
     case LUA_TSTRING: {
       constexpr size_t kMaxShown = 40;
       size_t length = 0;
@@ -121,8 +123,22 @@ Vector3 arg_vector(lua_State* L, int index, const char* fn, const char* what) {
   return {float(t[0]), float(t[1]), float(t[2])};
 }
 Color arg_color(lua_State* L, int index, const char* fn, const char* what) {
+  const Color c = arg_light_colour(L, index, fn, what);
+  warn_if_0_to_255(L, c, fn, what);
+  return c;
+}
+
+Color arg_light_colour(lua_State* L, int index, const char* fn, const char* what) {
   const auto t = arg_tuple3(L, index, fn, what);
   return {float(t[0]), float(t[1]), float(t[2])};
+}
+
+void warn_if_0_to_255(lua_State* L, const Color& c, const char* fn, const char* what) {
+  constexpr float kFarAboveOne = 2;
+  if (std::max({c.r, c.g, c.b}) <= kFarAboveOne) return;
+  add_warning(L, std::string(fn) + ": " + what + " {" + format_number(c.r) + ", " + format_number(c.g) + ", " +
+                     format_number(c.b) + "} is far above 1; mjray colours run from 0 to 1 (for 0-255 values, "
+                     "divide by 255)");
 }
 
 std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, const char* what) {

@@ -46,7 +46,7 @@ int collect_shared(lua_State* L) {
   return 0;
 }
 
-/// How the value at `index` reads in a message: "nothing", "nil", "a number", "the string 'x'",
+/// How the value at `index` reads in a message: "nothing", "nil", "the number 2.5", "the string 'x'",
 /// "an empty table", "a table of 2 values", "a gr.light".
 std::string describe(lua_State* L, int index);
 
@@ -61,7 +61,13 @@ std::string read_tuple3(lua_State* L, int index, std::array<double, 3>& out);
 std::array<double, 3> arg_tuple3(lua_State* L, int index, const char* fn, const char* what);
 Point3 arg_point(lua_State* L, int index, const char* fn, const char* what);
 Vector3 arg_vector(lua_State* L, int index, const char* fn, const char* what);
+/// A colour that reflects (kd, ks, ambient, texture colours); one with a component above 2 is
+/// read but warned about (a 0-255 value by mistake).
 Color arg_color(lua_State* L, int index, const char* fn, const char* what);
+/// A light's colour, which may be any brightness: no warning.
+Color arg_light_colour(lua_State* L, int index, const char* fn, const char* what);
+/// Warns (once per line) when a colour has a component above 2, which looks like 0-255.
+void warn_if_0_to_255(lua_State* L, const Color& colour, const char* fn, const char* what);
 std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, const char* what);
 /// A number as a person writes it: "0", "2.5", "180".
 std::string format_number(double value);

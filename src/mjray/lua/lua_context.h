@@ -4,7 +4,9 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +65,9 @@ struct LuaNode {
   std::shared_ptr<const TriangleMesh> mesh;
   std::shared_ptr<Material> material;
   std::vector<Transform> transform_calls;  ///< in call order
+  /// "the table-form gr.mesh" or "the gr.extendedmesh": geometry only old-skeleton and
+  /// original-project scenes make, which decides the automatic transform order.
+  const char* old_skeleton_geometry = nullptr;
   std::vector<std::shared_ptr<LuaNode>> children;
 
   LuaNode() = default;
@@ -78,10 +83,15 @@ struct LoaderContext {
   std::filesystem::path script;
   std::filesystem::path script_dir;
   SceneLoadOptions options;
-  bool saw_table_mesh = false;  ///< decides the automatic transform order
+  /// The automatic transform order, decided at the first gr.render (see docs/scene-format.md).
+  std::optional<bool> post_multiply;
   SceneDescription* description = nullptr;
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache;
   std::vector<std::weak_ptr<LuaNode>> nodes;  ///< every node made, to break cycles at the end
+  std::set<std::string> warned;  ///< warnings given, so that a loop gives each once
+  /// gr.lens's and gr.background's, for the gr.render calls after them.
+  float aperture_radius = 0, focus_distance = 0;
+  Background background;
 
   LoaderContext() = default;
   LoaderContext(const LoaderContext&) = delete;
@@ -102,6 +112,8 @@ void register_extensions(lua_State* L);
 /// Adds the textures (gr.*texture) to `gr` and set_material_texture to materials; needs
 /// register_gr first.
 void register_textures(lua_State* L);
+/// Adds gr.lens and gr.background to `gr`; needs register_gr first.
+void register_view(lua_State* L);
 /// Adds what CS 488 scripts of both course generations expect: unpack, string.gfind,
 /// the scene folder on the require path, and a built-in readobj module.
 void install_compatibility(lua_State* L);
@@ -112,8 +124,21 @@ void install_sandbox(lua_State* L);
 /// scene path (writes, os.remove and os.rename: beside the script), and forces loadfile to text.
 void install_path_resolution(lua_State* L);
 
+/// Makes reading a missing name from `gr`, a node or a material an error that suggests the
+/// closest name: "gr.sphre is not a gr function; did you mean gr.sphere?". Call after every
+/// gr function and method is registered.
+void guard_gr_names(lua_State* L);
+
 /// Adds a file the script reads to SceneDescription::inputs.
 void record_input(lua_State* L, const std::filesystem::path& path);
+
+/// Reads an OBJ file a scene draws: SceneError for malformed or empty files (no vertices or
+/// no faces), a warning when most of it is not OBJ.
+std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path);
+
+/// Adds "file:line: text" (the caller's line) to SceneDescription::warnings, once per line
+/// and text.
+void add_warning(lua_State* L, const std::string& text);
 
 /// "file:line" of the Lua code that called the running C function.
 FileLocation caller_location(lua_State* L);

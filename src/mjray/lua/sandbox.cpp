@@ -279,7 +279,7 @@ int builtin_readobj_impl(lua_State* L) {
   record_input(L, *path);
   TriangleMesh mesh;
   try {
-    mesh = load_obj(*path);
+    mesh = *load_checked_obj(L, *path);
   } catch (const SceneError& e) {
     throw ArgumentError(std::string("readobj: ") + e.what());
   }

@@ -17,6 +17,7 @@ extern "C" {
 #include <lualib.h>
 }
 
+#include "mjray/io/obj_loader.h"
 #include "mjray/lua/lua_context.h"
 
 namespace mjray {
@@ -55,7 +56,22 @@ FileLocation caller_location(lua_State* L) {
 }
 
 void record_input(lua_State* L, const std::filesystem::path& path) {
-  context(L).description->inputs.push_back(path);
+  LoaderContext& ctx = context(L);
+  ctx.description->inputs.push_back(path);
+  if (ctx.options.inputs_read) ctx.options.inputs_read->push_back(path);
+}
+
+void add_warning(lua_State* L, const std::string& text) {
+  LoaderContext& ctx = context(L);
+  const std::string warning = caller_location(L).to_string() + ": " + text;
+  if (ctx.warned.insert(warning).second) ctx.description->warnings.push_back(warning);
+}
+
+std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path) {
+  ObjSummary summary;
+  auto mesh = std::make_shared<const TriangleMesh>(load_obj(path, &summary));
+  if (const std::string warning = check_obj_content(*mesh, summary, path.string()); !warning.empty()) add_warning(L, warning);
+  return mesh;
 }
 
 std::string not_found_message(const std::string& name) {
@@ -209,6 +225,19 @@ class Watchdog {
   std::thread thread_;
 };
 
+/// Sets the -D globals: a number where Lua reads the text as one, else the text.
+void set_defines(lua_State* L, const SceneLoadOptions& options, const std::filesystem::path& script) {
+  for (const auto& [name, value] : options.defines) {
+    const int type = lua_getglobal(L, name.c_str());
+    lua_pop(L, 1);
+    if (type != LUA_TNIL)
+      throw SceneError(script.string() + ": -D " + name + "=" + value + " would replace the global '" + name +
+                       "' that mjray or Lua defines (a " + lua_typename(L, type) + "); choose another name");
+    if (lua_stringtonumber(L, value.c_str()) == 0) lua_pushstring(L, value.c_str());
+    lua_setglobal(L, name.c_str());
+  }
+}
+
 /// lua_atpanic: an error outside any protected call (only while the libraries are installed).
 int on_panic(lua_State* L) {
   const char* message = lua_tostring(L, -1);
@@ -248,6 +277,9 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   if (!options.unsafe_lua) lua::install_sandbox(L);
   lua::register_gr(L);
   lua::register_extensions(L);
+  lua::guard_gr_names(L);
+  lua::set_defines(L, options, script);
+  description.defines = options.defines;
 
   std::error_code ec;
   if (!std::filesystem::exists(script, ec))

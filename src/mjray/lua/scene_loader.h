@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "mjray/scene/scene_description.h"
 
@@ -25,6 +27,8 @@ inline constexpr size_t kDefaultLuaMemoryBytes = size_t(4) << 30;
 struct SceneLoadOptions {
   bool unsafe_lua = false;  ///< give the script the full standard library
   TransformOrder transform_order = TransformOrder::kAuto;
+  /// Decode 8-bit image textures from sRGB to linear (with --gamma srgb); else use v/255.
+  bool srgb_textures = false;
   /// Most bytes the Lua state may hold; past it the allocation fails with a SceneError
   /// naming the line. 0 = no cap.
   size_t lua_memory_bytes = kDefaultLuaMemoryBytes;
@@ -35,11 +39,17 @@ struct SceneLoadOptions {
   /// Most Lua VM instructions the script may run (deterministic, for tests and fuzzing);
   /// 0 = no limit.
   uint64_t instruction_limit = 0;
+  /// -D NAME=VALUE: globals set before the script runs, numbers where Lua reads VALUE as one
+  /// ("7", "0.25", "1e3"), else strings. Names must be Lua identifiers that name no global yet.
+  std::vector<std::pair<std::string, std::string>> defines;
+  /// When set, receives every file the script reads as it reads it (the script itself
+  /// excluded), so that a caller knows them also when the script fails (--watch watches them).
+  std::vector<std::filesystem::path>* inputs_read = nullptr;
 };
 
 /// Runs `script` and collects its gr.render calls. Throws SceneError with "file:line: problem"
 /// for syntax errors, runtime errors, bad gr.* arguments and sandbox violations, and when the
-/// script renders nothing.
+/// script renders nothing; and for a -D that would replace a global mjray or Lua defines.
 SceneDescription load_scene(const std::filesystem::path& script, const SceneLoadOptions& options);
 
 }  // namespace mjray

@@ -13,6 +13,7 @@ extern "C" {
 
 #include "mjray/io/image_reader.h"
 #include "mjray/io/path_resolver.h"
+#include "mjray/io/quantise.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
 #include "mjray/texture/texture.h"
@@ -53,7 +54,7 @@ constexpr char kMarble[] = "gr.perlinnoisemarbletexture";
 constexpr char kWavy[] = "gr.perlinnoisewavytexture";
 constexpr char kWood[] = "gr.perlinnoisewoodgraintexture";
 
-/// gr.filetexture('image.png'): a PNG or JPEG found like every other scene input.
+/// gr.filetexture('image.png'): a PNG, JPEG or EXR found like every other scene input.
 int gr_filetexture(lua_State* L) {
   const char* fn = "gr.filetexture";
   const std::string name = arg_string(L, 1, fn, "file name");
@@ -64,6 +65,7 @@ int gr_filetexture(lua_State* L) {
   ImageTexture texture;
   try {
     texture.image = read_image(*path);
+    if (context(L).options.srgb_textures && !holds_linear_values(*path)) decode_srgb_8bit(texture.image);
   } catch (const OutputError& e) {
     throw ArgumentError(std::string(fn) + ": " + e.what());
   }

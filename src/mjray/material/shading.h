@@ -46,6 +46,8 @@ struct LocalShading {
   Color phong(const ShadingFrame& f, const Vector3& l, float n_dot_l) const {
     const Vector3 r = Vector3(f.n) * (2 * n_dot_l) - l;
     const float r_dot_v = std::max(0.f, dot(r, f.wo));
+    // ks·0 adds exactly nothing: skip the power where it cannot count.
+    if (ks.is_black() || (r_dot_v == 0 && shininess > 0)) return kd * n_dot_l + Color{};
     return kd * n_dot_l + ks * std::pow(r_dot_v, shininess);
   }
 
@@ -109,9 +111,9 @@ struct LocalShading {
 enum class LobeKind { kReflection, kTransmission };
 
 /// One direction light arrives from by specular reflection or refraction, with its weight in
-/// the surface's colour. A glossy lobe (samples > 1) spreads `samples` rays uniformly over the
-/// cone of half-angle acos(cos_cone) around `direction`; otherwise the lobe is one ray along
-/// `direction` (a mirror or a lens).
+/// the surface's colour. A glossy lobe (cos_cone < 1) spreads `samples` rays uniformly over the
+/// cone of half-angle acos(cos_cone) around `direction` (one sample is one such ray); otherwise
+/// the lobe is one ray along `direction` (a mirror or a lens).
 struct SpecularLobe {
   Vector3 direction;
   float weight = 0;

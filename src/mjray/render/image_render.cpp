@@ -5,28 +5,58 @@
 
 #include "mjray/core/error.h"
 #include "mjray/render/adaptive_antialiasing.h"
+#include "mjray/render/tile_render.h"
 
 namespace mjray {
 
 namespace {
 
-TileLayout layout_of(int width, int height, int tile_size) { return {width, height, std::max(1, tile_size)}; }
+TileLayout layout_of(const PixelRect& region, int tile_size) {
+  return {region.x1 - region.x0, region.y1 - region.y0, std::max(1, tile_size)};
+}
+
+/// Camera samples per pixel of the first pass and of an anti-aliasing estimate.
+uint64_t first_pass_samples(const SamplingSettings& s) { return uint64_t(std::max(1, s.samples_per_pixel)); }
+uint64_t antialias_samples(const SamplingSettings& s) {
+  return uint64_t(s.antialias_samples) * uint64_t(s.antialias_samples) * first_pass_samples(s);
+}
 
 }  // namespace
 
-ImageRender::ImageRender(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
-                         const RenderSettings& settings)
-    : sampler_(camera, integrator, width, height, settings),
+PixelRect rendered_region(int width, int height, const RenderSettings& settings) {
+  if (!settings.crop) return {0, 0, width, height};
+  const int margin = settings.antialias_samples > 0 ? 2 * std::max(0, settings.antialias_max_passes) : 0;
+  const PixelRect& c = *settings.crop;
+  return {std::max(0, c.x0 - margin), std::max(0, c.y0 - margin), std::min(width, c.x1 + margin),
+          std::min(height, c.y1 + margin)};
+}
+
+ImageRender::ImageRender(const Camera& camera, int width, int height, const Integrator& integrator,
+                         const RenderSettings& settings, const TileExecutorFactory& executor)
+    : region_(rendered_region(width, height, settings)),
+      sampler_(camera, integrator, width, height, settings, region_),
       settings_(settings),
-      layout_(layout_of(width, height, settings.tile_size)),
-      workers_(sampler_, layout_, settings.threads),
-      film_(width, height),
-      supersampled_(size_t(width) * size_t(height), 0) {
+      layout_(layout_of(region_, settings.tile_size)),
+      workers_(executor ? executor(sampler_, layout_) : std::make_unique<TileRender>(sampler_, layout_, settings.threads)),
+      film_(layout_.width, layout_.height),
+      supersampled_(size_t(layout_.width) * size_t(layout_.height), 0) {
+  const PixelRect crop = settings.crop.value_or(region_);
+  window_ = {crop.x0 - region_.x0, crop.y0 - region_.y0, crop.x1 - region_.x0, crop.y1 - region_.y0};
   settings_.tile_size = layout_.tile_size;
   tile_done_ = std::make_unique<std::atomic<uint8_t>[]>(size_t(layout_.count()));
   for (int t = 0; t < layout_.count(); ++t) tile_done_[size_t(t)] = 0;
-  total_ = uint64_t(width) * uint64_t(height);
+  total_ = uint64_t(layout_.width) * uint64_t(layout_.height) * first_pass_samples(settings);
 }
+
+Image ImageRender::windowed(const Image& image) const {
+  if (!settings_.crop) return image;
+  Image window(window_.x1 - window_.x0, window_.y1 - window_.y0);
+  for (int y = 0; y < window.height(); ++y)
+    for (int x = 0; x < window.width(); ++x) window.at(x, y) = image.at(x + window_.x0, y + window_.y0);
+  return window;
+}
+
+Image ImageRender::image() const { return windowed(film_.resolve()); }
 
 void ImageRender::resume_from(const RenderCheckpoint& c) {
   if (c.film.width() != film_.width() || c.film.height() != film_.height() || c.tile_size != layout_.tile_size ||
@@ -40,7 +70,7 @@ void ImageRender::resume_from(const RenderCheckpoint& c) {
   uint64_t done = 0;
   for (int t = 0; t < layout_.count(); ++t) {
     tile_done_[size_t(t)] = c.tile_done[size_t(t)];
-    if (c.tile_done[size_t(t)]) done += uint64_t(layout_.rect(t).pixel_count());
+    if (c.tile_done[size_t(t)]) done += uint64_t(layout_.rect(t).pixel_count()) * first_pass_samples(settings_);
   }
   done_ = done;
 }
@@ -57,9 +87,9 @@ bool ImageRender::run_first_pass() {
   std::vector<int> pending;
   for (int t = 0; t < layout_.count(); ++t)
     if (!tile_done_[size_t(t)]) pending.push_back(t);
-  const bool finished = workers_.render_tiles(pending, film_, stop_.get_token(), [&](int tile) {
+  const bool finished = workers_->render_tiles(pending, film_, stop_.get_token(), [&](int tile) {
     tile_done_[size_t(tile)].store(1, std::memory_order_release);
-    done_ += uint64_t(layout_.rect(tile).pixel_count());
+    done_ += uint64_t(layout_.rect(tile).pixel_count()) * first_pass_samples(settings_);
     if (++tiles_finished_ == stop_after_tiles_) stop_.request_stop();
   });
   if (!finished) return false;
@@ -68,6 +98,7 @@ bool ImageRender::run_first_pass() {
 }
 
 bool ImageRender::plan_pass() {
+  std::lock_guard lock(film_mutex_);  // checkpoint() may read the plan from another thread
   const std::vector<int> pixels = next_supersample_set(film_.resolve(), settings_.antialias_threshold, supersampled_);
   if (pixels.empty()) return false;
   pass_pixels_.assign(pixels.begin(), pixels.end());
@@ -77,8 +108,8 @@ bool ImageRender::plan_pass() {
 
 bool ImageRender::run_antialiasing() {
   if (settings_.antialias_samples <= 0) return true;
-  const uint64_t samples_per_pixel = uint64_t(settings_.antialias_samples) * uint64_t(settings_.antialias_samples);
-  for (; antialias_pass_ <= settings_.antialias_max_passes; ++antialias_pass_) {
+  const uint64_t samples_per_pixel = antialias_samples(settings_);
+  while (antialias_pass_ <= settings_.antialias_max_passes) {
     if (stop_.stop_requested()) return false;
     // Plan the pass from the image the last pass left (a resumed pass keeps its plan).
     if (pass_pixels_.empty() && !plan_pass()) break;
@@ -93,7 +124,7 @@ bool ImageRender::run_antialiasing() {
       plan_index.push_back(k);
     }
     total_ += pass_pixels_.size() * samples_per_pixel;
-    const bool finished = workers_.render_pixels(pending, stop_.get_token(), [&](const SupersampledChunk& chunk) {
+    const bool finished = workers_->render_pixels(pending, stop_.get_token(), [&](const SupersampledChunk& chunk) {
       const size_t first = size_t(chunk.pixels.data() - pending.data());
       std::lock_guard lock(film_mutex_);
       for (size_t k = 0; k < chunk.pixels.size(); ++k) {
@@ -105,22 +136,24 @@ bool ImageRender::run_antialiasing() {
       done_ += chunk.pixels.size() * samples_per_pixel;
     });
     if (!finished) return false;
+    // The plan and the pass number change together, so a checkpoint never sees one without the other.
     std::lock_guard lock(film_mutex_);
     pass_pixels_.clear();
     pass_done_.clear();
     ++antialias_passes_run_;
+    ++antialias_pass_;
   }
   antialias_pass_ = settings_.antialias_max_passes + 1;
   return true;
 }
 
 RenderProgress ImageRender::progress() const {
-  return {done_.load(), total_.load(), workers_.rays_published(), antialias_pass_};
+  return {done_.load(), total_.load(), workers_->rays_published(), antialias_pass_};
 }
 
 Image ImageRender::snapshot() const {
   std::lock_guard lock(film_mutex_);
-  if (antialias_pass_ > 0) return film_.resolve();
+  if (antialias_pass_ > 0) return windowed(film_.resolve());
   // First pass: copy only tiles whose writes are complete.
   Image copy(film_.width(), film_.height());
   for (int t = 0; t < layout_.count(); ++t) {
@@ -129,7 +162,13 @@ Image ImageRender::snapshot() const {
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) copy.at(x, y) = film_.at(x, y).value();
   }
-  return copy;
+  return windowed(copy);
+}
+
+std::vector<uint8_t> ImageRender::finished_tiles() const {
+  std::vector<uint8_t> finished(size_t(layout_.count()));
+  for (int t = 0; t < layout_.count(); ++t) finished[size_t(t)] = tile_done_[size_t(t)].load(std::memory_order_acquire);
+  return finished;
 }
 
 RenderCheckpoint ImageRender::checkpoint() const {
@@ -137,8 +176,7 @@ RenderCheckpoint ImageRender::checkpoint() const {
   RenderCheckpoint c;
   c.tile_size = layout_.tile_size;
   c.antialias_pass = antialias_pass_;
-  c.tile_done.resize(size_t(layout_.count()));
-  for (int t = 0; t < layout_.count(); ++t) c.tile_done[size_t(t)] = tile_done_[size_t(t)].load(std::memory_order_acquire);
+  c.tile_done = finished_tiles();
   c.supersampled = supersampled_;
   c.pass_pixels = pass_pixels_;
   c.pass_done = pass_done_;
@@ -158,15 +196,15 @@ RenderCheckpoint ImageRender::checkpoint() const {
 
 RenderStats ImageRender::stats() const {
   RenderStats s;
-  s.rays = workers_.rays();
-  s.threads = workers_.threads();
+  s.rays = workers_->rays();
+  s.threads = workers_->threads();
   s.pixels_supersampled = pixels_supersampled_;
   s.antialias_passes = antialias_passes_run_;
   s.seconds = seconds_;
   return s;
 }
 
-Image render_image(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
+Image render_image(const Camera& camera, int width, int height, const Integrator& integrator,
                    const RenderSettings& settings, RenderStats* stats) {
   ImageRender render(camera, width, height, integrator, settings);
   MJRAY_CHECK(render.run());

@@ -7,16 +7,18 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stop_token>
 #include <vector>
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/core/image.h"
 #include "mjray/integrator/integrator.h"
 #include "mjray/render/film.h"
 #include "mjray/render/image_sampler.h"
 #include "mjray/render/render_checkpoint.h"
-#include "mjray/render/tile_render.h"
+#include "mjray/render/tile_executor.h"
+#include "mjray/render/tile_layout.h"
 
 namespace mjray {
 
@@ -24,7 +26,15 @@ namespace mjray {
 struct RenderSettings : SamplingSettings {
   int threads = 0;     ///< 0 = all cores
   int tile_size = 16;  ///< pixels per tile side
+  /// --crop: the window of the image to render and return; the whole image when unset.
+  std::optional<PixelRect> crop;
 };
+
+/// The pixels a render traces: without a crop the whole image; with one, the window grown by
+/// the reach of anti-aliasing's decisions (2 pixels per pass: a pixel's plan looks at its
+/// neighbours' neighbours), within the image, so that the window comes out exactly as in the
+/// whole image's render.
+PixelRect rendered_region(int width, int height, const RenderSettings& settings);
 
 /// What the render did.
 struct RenderStats {
@@ -35,7 +45,7 @@ struct RenderStats {
   int antialias_passes = 0;
 };
 
-/// Work done so far, in camera samples; `total` grows as anti-aliasing passes find work.
+/// Work done so far, in camera samples (--spp per pixel in the first pass); `total` grows as anti-aliasing passes find work.
 struct RenderProgress {
   uint64_t done = 0;
   uint64_t total = 0;
@@ -48,9 +58,10 @@ struct RenderProgress {
 /// snapshot() and checkpoint() may be called from other threads while run() works.
 class ImageRender {
  public:
-  /// The camera and integrator must outlive the render.
-  ImageRender(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
-              const RenderSettings& settings);
+  /// The camera and integrator must outlive the render. The tiles and pixels run on this
+  /// process's settings.threads threads unless `executor` makes another TileExecutor.
+  ImageRender(const Camera& camera, int width, int height, const Integrator& integrator,
+              const RenderSettings& settings, const TileExecutorFactory& executor = {});
 
   /// Continues from a checkpoint of the same scene and settings (call before run). Throws
   /// SceneError when its size or tiles do not match.
@@ -63,13 +74,20 @@ class ImageRender {
   void stop_after_tiles(int tiles) { stop_after_tiles_ = tiles; }
 
   RenderProgress progress() const;
-  /// The finished part of the image (unfinished tiles are black).
+  /// The finished part of the image, or of its crop window (unfinished tiles are black).
   Image snapshot() const;
+  /// Per tile of layout(), whether its first pass is finished (any thread). A tile finished in
+  /// this answer is finished in a snapshot() taken after it.
+  std::vector<uint8_t> finished_tiles() const;
+  const TileLayout& layout() const { return layout_; }
   /// The state to resume from after run() returned false.
   RenderCheckpoint checkpoint() const;
-  /// The image (after run() returned true).
-  Image image() const { return film_.resolve(); }
+  /// The image, or its crop window (after run() returned true).
+  Image image() const;
+  /// The film of rendered_region() (the window's margin included).
   const Film& film() const { return film_; }
+  /// What the film covers, in image pixels.
+  const PixelRect& region() const { return region_; }
   RenderStats stats() const;
 
  private:
@@ -78,10 +96,15 @@ class ImageRender {
   /// Chooses the pixels of the next anti-aliasing pass; false when there are none.
   bool plan_pass();
 
+  /// The crop window of `image` (region coordinates), or the image itself without a crop.
+  Image windowed(const Image& image) const;
+
+  PixelRect region_;   // rendered_region()
+  PixelRect window_;   // what image() returns, in region coordinates
   ImageSampler sampler_;
   RenderSettings settings_;
   TileLayout layout_;
-  TileRender workers_;
+  std::unique_ptr<TileExecutor> workers_;
   Film film_;
   std::unique_ptr<std::atomic<uint8_t>[]> tile_done_;
   std::vector<uint8_t> supersampled_;
@@ -98,8 +121,8 @@ class ImageRender {
   mutable std::mutex film_mutex_;          // anti-aliasing writes vs snapshot and checkpoint
 };
 
-/// Renders a whole image in one go (no interruption).
-Image render_image(const PinholeCamera& camera, int width, int height, const Integrator& integrator,
+/// Renders a whole image (or its crop window) in one go (no interruption).
+Image render_image(const Camera& camera, int width, int height, const Integrator& integrator,
                    const RenderSettings& settings, RenderStats* stats = nullptr);
 
 }  // namespace mjray

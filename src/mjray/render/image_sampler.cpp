@@ -1,27 +1,67 @@
 #include "mjray/render/image_sampler.h"
 
+#include <algorithm>
+
+#include "mjray/core/error.h"
+
 namespace mjray {
 
-void ImageSampler::first_pass(const PixelRect& rect, Film& film, RayCounters& counters) const {
+ImageSampler::ImageSampler(const Camera& camera, const Integrator& integrator, int width, int height,
+                           const SamplingSettings& settings, const PixelRect& region)
+    : camera_(camera), integrator_(integrator), image_width_(width), region_(region), settings_(settings) {
+  MJRAY_CHECK(region.x0 >= 0 && region.y0 >= 0 && region.x0 < region.x1 && region.y0 < region.y1 &&
+              region.x1 <= width && region.y1 <= height);
+}
+
+StratifiedGrid stratified_grid(int n) {
+  int rows = 1;
+  for (int r = 1; r * r <= n; ++r)
+    if (n % r == 0) rows = r;
+  return {n / rows, rows};
+}
+
+Color ImageSampler::trace(float sx, float sy, RandomStream& random, TraceState& state) const {
+  if (!camera_.has_lens()) return integrator_.radiance(camera_.generate_ray(sx, sy), random, state);
+  const float lens_u = random.uniform();
+  const float lens_v = random.uniform();
+  return integrator_.radiance(camera_.generate_ray(sx, sy, lens_u, lens_v), random, state);
+}
+
+void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state) const {
+  const int n = settings_.samples_per_pixel;
+  const StratifiedGrid grid = stratified_grid(n);
   for (int y = rect.y0; y < rect.y1; ++y)
     for (int x = rect.x0; x < rect.x1; ++x) {
-      RandomStream random(settings_.seed, pixel_key(x, y), first_pass_sample_index(0));
-      film.add(x, y, integrator_.radiance(camera_.generate_ray(float(x) + 0.5f, float(y) + 0.5f), random, counters));
+      const int ix = x + region_.x0, iy = y + region_.y0;
+      if (n <= 1) {
+        RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(0));
+        film.add(x, y, trace(float(ix) + 0.5f, float(iy) + 0.5f, random, state));
+        continue;
+      }
+      for (int s = 0; s < n; ++s) {
+        RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(uint32_t(s)));
+        const float sx = float(ix) + (float(s % grid.columns) + random.uniform()) / float(grid.columns);
+        const float sy = float(iy) + (float(s / grid.columns) + random.uniform()) / float(grid.rows);
+        film.add(x, y, trace(sx, sy, random, state));
+      }
     }
 }
 
-FilmPixel ImageSampler::supersample(int x, int y, RayCounters& counters) const {
-  // Compute the sum over an N×N jittered grid of the pixel.
+FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
+  // Compute the sum over a jittered grid of the pixel: N×N cells, each a stratified --spp grid.
   const int n = settings_.antialias_samples;
+  const StratifiedGrid cell = stratified_grid(std::max(1, settings_.samples_per_pixel));
+  const int columns = n * cell.columns, rows = n * cell.rows;
+  const int ix = x + region_.x0, iy = y + region_.y0;
   Color sum;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      RandomStream random(settings_.seed, pixel_key(x, y), antialias_sample_index(uint32_t(j * n + i)));
-      const float sx = float(x) + (float(i) + random.uniform()) / float(n);
-      const float sy = float(y) + (float(j) + random.uniform()) / float(n);
-      sum += integrator_.radiance(camera_.generate_ray(sx, sy), random, counters);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      RandomStream random(settings_.seed, pixel_key(ix, iy), antialias_sample_index(uint32_t(j * columns + i)));
+      const float sx = float(ix) + (float(i) + random.uniform()) / float(columns);
+      const float sy = float(iy) + (float(j) + random.uniform()) / float(rows);
+      sum += trace(sx, sy, random, state);
     }
-  return {sum, float(n * n)};
+  return {sum, float(columns * rows)};
 }
 
 }  // namespace mjray

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/integrator/integrator.h"
 #include "mjray/render/film.h"
 #include "mjray/render/tile_layout.h"
@@ -17,40 +17,64 @@ struct SamplingSettings {
   int antialias_samples = 0;        ///< -a: N×N jittered samples in bad pixels; 0 = off
   float antialias_threshold = 0.1f; ///< --aa-threshold: neighbour difference that makes a pixel bad
   int antialias_max_passes = 4;     ///< passes of adaptive supersampling at most
+  /// --spp: stratified first-pass samples in every pixel (1 = the pixel centre). A bad pixel's
+  /// anti-aliasing estimate then has -a² times as many: N×N cells of this many each.
+  int samples_per_pixel = 1;
 };
 
 /// The random stream of a camera sample is keyed by (seed, pixel, sample index); draws within
-/// it are numbered in the order the integrator makes them (light samples, lobes, bounces), so
-/// no two draws of one sample collide. Sample indices of the passes are disjoint:
-///   first pass sample s (the pixel centre when s = 0): s · 2³²
-///   adaptive anti-aliasing sample k of a pixel (k < N²):  k + 1
+/// it are numbered in the order they are made: the position in the pixel (two, except for the
+/// single first-pass sample at the centre), the lens point (two, with a thin lens), then the
+/// integrator's (light samples, lobes, bounces), so no two draws of one sample collide.
+/// Sample indices of the passes are disjoint:
+///   first pass sample s (s < --spp; the pixel centre when --spp is 1): s · 2³²
+///   adaptive anti-aliasing sample k of a pixel (k < N²·spp):           k + 1
 constexpr uint64_t first_pass_sample_index(uint32_t s) { return uint64_t(s) << 32; }
 constexpr uint64_t antialias_sample_index(uint32_t k) { return uint64_t(k) + 1; }
 
-/// Turns pixels into film samples through a camera and an integrator.
+/// A stratified grid of n cells over a pixel: columns × rows = n, as square as n's divisors
+/// allow (16: 4×4, 8: 4×2, 7: 7×1).
+struct StratifiedGrid {
+  int columns = 1, rows = 1;
+};
+StratifiedGrid stratified_grid(int n);
+
+/// Turns pixels into film samples through a camera and an integrator. Pixels are numbered in
+/// `region`, a window of the width × height image (the whole image unless a crop asks for
+/// less); random streams and camera rays use image coordinates.
 class ImageSampler {
  public:
   /// The camera, integrator and settings must outlive the sampler.
-  ImageSampler(const PinholeCamera& camera, const Integrator& integrator, int width, int height,
+  ImageSampler(const Camera& camera, const Integrator& integrator, int width, int height,
                const SamplingSettings& settings)
-      : camera_(camera), integrator_(integrator), width_(width), height_(height), settings_(settings) {}
+      : ImageSampler(camera, integrator, width, height, settings, {0, 0, width, height}) {}
+  /// Samples only `region` (which must lie inside the image).
+  ImageSampler(const Camera& camera, const Integrator& integrator, int width, int height,
+               const SamplingSettings& settings, const PixelRect& region);
 
-  int width() const { return width_; }
-  int height() const { return height_; }
+  /// The size of the region sampled (what films, tiles and pixel indices cover).
+  int width() const { return region_.x1 - region_.x0; }
+  int height() const { return region_.y1 - region_.y0; }
+  const PixelRect& region() const { return region_; }
   const SamplingSettings& settings() const { return settings_; }
 
-  /// The first pass over `rect`: one sample through each pixel centre, added to `film`.
-  void first_pass(const PixelRect& rect, Film& film, RayCounters& counters) const;
-  /// The adaptive anti-aliasing estimate of pixel (x, y): N×N jittered samples, which replace
-  /// the pixel's first-pass estimate (the original's rule).
-  FilmPixel supersample(int x, int y, RayCounters& counters) const;
+  /// The first pass over `rect` (region coordinates): --spp stratified samples per pixel
+  /// (one through the centre when --spp is 1), added to `film`.
+  void first_pass(const PixelRect& rect, Film& film, TraceState& state) const;
+  /// The adaptive anti-aliasing estimate of region pixel (x, y): N×N jittered cells of --spp
+  /// stratified samples each, which replace the pixel's first-pass estimate (the original's
+  /// rule).
+  FilmPixel supersample(int x, int y, TraceState& state) const;
 
  private:
-  uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(width_) + uint64_t(x); }
+  uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }
+  /// The radiance of the camera sample at image position (sx, sy), drawing the lens point first.
+  Color trace(float sx, float sy, RandomStream& random, TraceState& state) const;
 
-  const PinholeCamera& camera_;
+  const Camera& camera_;
   const Integrator& integrator_;
-  int width_, height_;
+  int image_width_;
+  PixelRect region_;
   SamplingSettings settings_;
 };
 

@@ -44,6 +44,7 @@ class Reader {
   }
   void bytes(void* out, size_t n) {
     if (n > data_.size() - offset_) throw SceneError(path_.string() + ": the resume state file is truncated");
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not see
     std::memcpy(out, data_.data() + offset_, n);
     offset_ += n;
   }
@@ -58,7 +59,7 @@ class Reader {
 
 }  // namespace
 
-void write_checkpoint(const RenderCheckpoint& c, const std::filesystem::path& path) {
+std::string encode_checkpoint(const RenderCheckpoint& c) {
   std::string out(kMagic, sizeof kMagic);
   put(out, uint64_t(c.fingerprint.size()));
   out += c.fingerprint;
@@ -71,8 +72,12 @@ void write_checkpoint(const RenderCheckpoint& c, const std::filesystem::path& pa
   put_vector(out, c.pass_pixels);
   put_vector(out, c.pass_done);
   out.append(reinterpret_cast<const char*>(c.film.pixels().data()), c.film.pixels().size() * sizeof(FilmPixel));
+  return out;
+}
+
+void write_checkpoint(const RenderCheckpoint& c, const std::filesystem::path& path) {
   try {
-    write_file_atomically(path, out);
+    write_file_atomically(path, encode_checkpoint(c));
   } catch (const OutputError& e) {
     throw OutputError(std::string("the resume state: ") + e.what());
   }
@@ -81,7 +86,10 @@ void write_checkpoint(const RenderCheckpoint& c, const std::filesystem::path& pa
 RenderCheckpoint read_checkpoint(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path.string() + ": cannot open the resume state file (render without --resume)");
-  const std::string data((std::istreambuf_iterator<char>(in)), {});
+  return decode_checkpoint(std::string((std::istreambuf_iterator<char>(in)), {}), path);
+}
+
+RenderCheckpoint decode_checkpoint(const std::string& data, const std::filesystem::path& path) {
   Reader r(data, path);
   char magic[sizeof kMagic];
   r.bytes(magic, sizeof magic);

@@ -29,6 +29,12 @@ void write_checkpoint(const RenderCheckpoint& checkpoint, const std::filesystem:
 /// Reads a checkpoint; throws SceneError naming the file when it is unreadable or malformed.
 RenderCheckpoint read_checkpoint(const std::filesystem::path& path);
 
+/// The bytes of a state file (to write, or to send to another process).
+std::string encode_checkpoint(const RenderCheckpoint& checkpoint);
+
+/// Decodes the bytes of a state file; throws SceneError naming `origin` when they are malformed.
+RenderCheckpoint decode_checkpoint(const std::string& bytes, const std::filesystem::path& origin);
+
 /// The state file that belongs to an output image.
 inline std::filesystem::path checkpoint_path(const std::filesystem::path& image) {
   return image.string() + ".mjray-state";

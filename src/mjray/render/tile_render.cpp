@@ -14,13 +14,13 @@ int resolve_thread_count(int requested) {
 
 TileRender::TileRender(const ImageSampler& sampler, const TileLayout& layout, int threads)
     : sampler_(sampler), layout_(layout), thread_count_(std::clamp(resolve_thread_count(threads), 1, std::max(1, layout.count()))) {
-  counters_.resize(size_t(thread_count_));
+  states_.resize(size_t(thread_count_));
   published_rays_ = std::make_unique<std::atomic<uint64_t>[]>(size_t(thread_count_));
   for (int t = 0; t < thread_count_; ++t) published_rays_[size_t(t)] = 0;
 }
 
 void TileRender::publish(int thread) {
-  published_rays_[size_t(thread)].store(counters_[size_t(thread)].total(), std::memory_order_relaxed);
+  published_rays_[size_t(thread)].store(states_[size_t(thread)].rays.total(), std::memory_order_relaxed);
 }
 
 bool TileRender::render_tiles(std::span<const int> tiles, Film& film, std::stop_token stop,
@@ -33,7 +33,7 @@ bool TileRender::render_tiles(std::span<const int> tiles, Film& film, std::stop_
       return;
     }
     const int tile = tiles[size_t(k)];
-    sampler_.first_pass(layout_.rect(tile), film, counters_[size_t(thread)]);
+    sampler_.first_pass(layout_.rect(tile), film, states_[size_t(thread)]);
     publish(thread);
     if (on_tile) on_tile(tile);
   });
@@ -53,7 +53,7 @@ bool TileRender::render_pixels(std::span<const int> pixels, std::stop_token stop
     const size_t begin = size_t(c) * kChunk, end = std::min(pixels.size(), begin + kChunk);
     FilmPixel values[kChunk];
     for (size_t k = begin; k < end; ++k)
-      values[k - begin] = sampler_.supersample(pixels[k] % width, pixels[k] / width, counters_[size_t(thread)]);
+      values[k - begin] = sampler_.supersample(pixels[k] % width, pixels[k] / width, states_[size_t(thread)]);
     publish(thread);
     on_chunk({pixels.subspan(begin, end - begin), std::span<const FilmPixel>(values, end - begin)});
   });
@@ -62,7 +62,7 @@ bool TileRender::render_pixels(std::span<const int> pixels, std::stop_token stop
 
 RayCounters TileRender::rays() const {
   RayCounters total;
-  for (const RayCounters& c : counters_) total += c;
+  for (const TraceState& s : states_) total += s.rays;
   return total;
 }
 

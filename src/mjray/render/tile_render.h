@@ -12,40 +12,34 @@
 #include <vector>
 
 #include "mjray/render/image_sampler.h"
+#include "mjray/render/tile_executor.h"
 
 namespace mjray {
 
-/// Pixels of one finished piece of an anti-aliasing pass: row-major pixel indices and the
-/// film pixels that replace theirs.
-struct SupersampledChunk {
-  std::span<const int> pixels;
-  std::span<const FilmPixel> values;
-};
-
-/// Runs an ImageSampler over tiles and pixel lists on `threads` threads.
-class TileRender {
+/// Runs an ImageSampler over tiles and pixel lists on `threads` threads of this process.
+class TileRender final : public TileExecutor {
  public:
   TileRender(const ImageSampler& sampler, const TileLayout& layout, int threads);
 
   const TileLayout& layout() const { return layout_; }
-  int threads() const { return thread_count_; }
+  int threads() const override { return thread_count_; }
 
   /// The first pass of every tile in `tiles`, written into `film` (which must match the
   /// layout). `on_tile(tile)` runs on the worker after each finished tile; tiles not started
   /// once `stop` is requested are skipped. Returns whether every tile was done.
   bool render_tiles(std::span<const int> tiles, Film& film, std::stop_token stop,
-                    const std::function<void(int tile)>& on_tile = {});
+                    const std::function<void(int tile)>& on_tile = {}) override;
 
   /// Supersamples `pixels` (row-major indices) in chunks of kChunk; `on_chunk` receives each
   /// finished chunk on the worker (the caller stores it). Returns whether all were done.
   bool render_pixels(std::span<const int> pixels, std::stop_token stop,
-                     const std::function<void(const SupersampledChunk&)>& on_chunk);
+                     const std::function<void(const SupersampledChunk&)>& on_chunk) override;
   static constexpr int kChunk = 64;
 
   /// Rays cast so far, by kind, summed over threads (call when no render_* is running).
-  RayCounters rays() const;
+  RayCounters rays() const override;
   /// Rays of every kind cast so far, as published after each tile or chunk (any thread).
-  uint64_t rays_published() const;
+  uint64_t rays_published() const override;
 
  private:
   void publish(int thread);
@@ -53,7 +47,7 @@ class TileRender {
   const ImageSampler& sampler_;
   TileLayout layout_;
   int thread_count_;
-  std::vector<RayCounters> counters_;                        // one per thread
+  std::vector<TraceState> states_;                           // one per thread
   std::unique_ptr<std::atomic<uint64_t>[]> published_rays_;  // per thread, for live rays/s
 };
 

@@ -6,9 +6,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/core/color.h"
 #include "mjray/core/error.h"
 #include "mjray/core/transform.h"
@@ -16,6 +17,7 @@
 #include "mjray/geometry/triangle_mesh.h"
 #include "mjray/light/light.h"
 #include "mjray/material/material.h"
+#include "mjray/scene/background.h"
 
 namespace mjray {
 
@@ -33,12 +35,6 @@ struct SceneNode {
   std::vector<std::shared_ptr<const SceneNode>> children;
 };
 
-/// The background seen by rays that hit nothing: a vertical gradient over the ray direction.
-struct Background {
-  Color zenith{0.20f, 0.28f, 0.45f};   ///< straight up
-  Color horizon{0.62f, 0.68f, 0.78f};  ///< level and below
-};
-
 /// One gr.render call: what to draw, from where, into which file.
 struct RenderJob {
   FileLocation where;                     ///< the gr.render call
@@ -49,7 +45,7 @@ struct RenderJob {
   CameraDescription camera;
   Color ambient;
   std::vector<Light> lights;
-  Background background;
+  Background background;                  ///< gr.background's, when one came before
   bool post_multiplied = false;           ///< node transforms composed M = M·T (old skeleton)
 };
 
@@ -58,9 +54,12 @@ struct SceneDescription {
   std::filesystem::path script;
   std::vector<RenderJob> jobs;
   std::vector<std::string> warnings;  ///< "file:line: text", shown to the user
+  std::vector<std::string> notes;     ///< "file:line: text": choices made for the user (e.g. the transform order)
   /// Every file the script read (meshes, textures, modules, files it opened), as resolved;
   /// outputs must not overwrite them.
   std::vector<std::filesystem::path> inputs;
+  /// The globals -D set before the script ran (name, value as given): they shape every job.
+  std::vector<std::pair<std::string, std::string>> defines;
 };
 
 }  // namespace mjray

@@ -31,7 +31,12 @@ const WorldMesh& World::mesh_of(uint32_t triangle) const {
   return *(after - 1);
 }
 
-SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
+SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const { return shade<true>(ray, hit); }
+
+SurfaceInteraction World::crossing(const Ray& ray, const Hit& hit) const { return shade<false>(ray, hit); }
+
+template <bool kFull>
+SurfaceInteraction World::shade(const Ray& ray, const Hit& hit) const {
   SurfaceInteraction si;
   if (primitives.is_triangle(hit.prim)) {
     // Compute the point and normals from barycentrics, in world space.
@@ -53,12 +58,14 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
                         Vector3(mesh.normals[size_t(c[2].normal)]) * hit.v;
       if (length(n) > 0) si.shading_normal = face_forward(normalize(Normal3(n)), Vector3(si.geometric_normal));
     }
+    si.material = mesh.material;
+    si.prim = hit.prim;
+    if constexpr (!kFull) return si;
     if (c[0].uv >= 0 && c[1].uv >= 0 && c[2].uv >= 0) {
       const Point2 &t0 = mesh.uvs[size_t(c[0].uv)], &t1 = mesh.uvs[size_t(c[1].uv)], &t2 = mesh.uvs[size_t(c[2].uv)];
       si.uv = {b0 * t0.u + hit.u * t1.u + hit.v * t2.u, b0 * t0.v + hit.u * t1.v + hit.v * t2.v};
     }
     si.object_point = mesh.world_from_object.inverse()(si.point);
-    si.material = mesh.material;
     return si;
   }
   // Compute shape data in object space and map it back to the world.
@@ -67,19 +74,18 @@ SurfaceInteraction World::interaction(const Ray& ray, const Hit& hit) const {
   const Ray object_ray = instance.object_from_world(ray);
   const ShapeSurface surface =
       std::visit([&](const auto& shape) { return shape.surface(object_ray.at(hit.t)); }, instance.shape);
-  si.uv = surface.uv;
-  si.object_point = s.node_from_object(surface.point);
   si.point = s.world_from_object(surface.point);
   si.point_error = transformed_point_error(s.world_from_object.matrix(), surface.point);
   si.geometric_normal = normalize(s.world_from_object(surface.normal));
   si.shading_normal = si.geometric_normal;
   si.material = s.material;
+  si.prim = hit.prim;
+  if constexpr (!kFull) return si;
+  si.uv = std::visit([&](const auto& shape) { return shape.uv(surface.point); }, instance.shape);
+  si.object_point = s.node_from_object(surface.point);
   return si;
 }
 
-Color World::background_radiance(const Vector3& direction) const {
-  const float up = std::clamp(direction.y / length(direction), 0.f, 1.f);
-  return background.horizon * (1 - up) + background.zenith * up;
-}
+Color World::background_radiance(const Vector3& direction) const { return background.radiance(direction); }
 
 }  // namespace mjray

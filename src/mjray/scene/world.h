@@ -51,11 +51,17 @@ class World {
   uint32_t primitive_count() const { return primitives.size(); }
   /// Shading data at a hit returned for `ray`.
   SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
+  /// Only the material and the normals of interaction(ray, hit) (the same values): what a
+  /// shadow ray crossing a surface asks.
+  SurfaceInteraction crossing(const Ray& ray, const Hit& hit) const;
   /// What a ray that leaves the scene sees.
   Color background_radiance(const Vector3& direction) const;
 
  private:
   const WorldMesh& mesh_of(uint32_t triangle) const;
+  /// interaction (kFull) or crossing.
+  template <bool kFull>
+  SurfaceInteraction shade(const Ray& ray, const Hit& hit) const;
 };
 
 }  // namespace mjray

@@ -89,7 +89,12 @@ TEST(GridBuild, ResolutionIsClampedAndCapped) {
   EXPECT_EQ(UniformGrid(world, 0).resolution(), 30);
   EXPECT_EQ(UniformGrid(world, 5).resolution(), 5);
   EXPECT_EQ(UniformGrid(world, -3).resolution(), 1);
-  EXPECT_EQ(UniformGrid(world, 4096).resolution(), 256);
+  const UniformGrid capped(world, 4096);
+  EXPECT_EQ(capped.resolution(), 256);
+  EXPECT_EQ(capped.resolution_note(),
+            "grid resolution 4096 is above the limit of 256 voxels per axis; the grid uses 256³ voxels");
+  EXPECT_EQ(UniformGrid(world, 5).resolution_note(), "");
+  EXPECT_EQ(UniformGrid(world, 0).resolution_note(), "");
 }
 
 TEST(GridBuild, HugeShapesInAFineGridStayWithinTheMemoryBudget) {
@@ -99,6 +104,9 @@ TEST(GridBuild, HugeShapesInAFineGridStayWithinTheMemoryBudget) {
   OracleCase c = random_case(std::make_unique<PrimitiveSet>(world), 2000, 3);
   const UniformGrid grid(*c.prims, 256);
   EXPECT_LT(grid.resolution(), 256);
+  EXPECT_EQ(grid.resolution_note(), "grid resolution 256 " + std::to_string(2 * grid.resolution()) +
+                                        "³ voxels would list more than 16777216 primitive references (the memory "
+                                        "budget); the grid uses " + std::to_string(grid.resolution()) + "³ voxels");
   EXPECT_LE(grid.reference_count(), size_t(1) << 24);
   EXPECT_LT(grid.memory_bytes(), size_t(200) << 20);
   expect_agreement(c, grid);

@@ -63,10 +63,13 @@ TEST(Interaction, NormalsFollowNonUniformScaleAndMirroring) {
   EXPECT_NEAR(si.shading_normal.z, n1.z, 1e-6f);
 }
 
-TEST(Interaction, CubeFacesMapTheirTwoOtherCoordinatesToUv) {
-  EXPECT_EQ(unit_cube_uv({1, 0.25f, 0.75f}), (Point2{0.25f, 0.75f}));   // +x face: (y, z)
-  EXPECT_EQ(unit_cube_uv({0.5f, 0, 0.125f}), (Point2{0.125f, 0.5f}));  // −y face: (z, x)
+TEST(Interaction, CubeFacesMapRightAndUpAsSeenFromOutsideToUv) {
+  EXPECT_EQ(unit_cube_uv({1, 0.25f, 0.75f}), (Point2{0.25f, 0.25f}));  // +x face: right is −z, up +y
+  EXPECT_EQ(unit_cube_uv({0, 0.25f, 0.75f}), (Point2{0.75f, 0.25f}));  // −x face: right is +z
+  EXPECT_EQ(unit_cube_uv({0.5f, 0, 0.125f}), (Point2{0.5f, 0.125f}));  // −y face: right +x, up +z
+  EXPECT_EQ(unit_cube_uv({0.5f, 1, 0.125f}), (Point2{0.5f, 0.875f}));  // +y face: right +x, up −z
   EXPECT_EQ(unit_cube_uv({0.3f, 0.6f, 1}), (Point2{0.3f, 0.6f}));      // +z face: (x, y)
+  EXPECT_EQ(unit_cube_uv({0.25f, 0.6f, 0}), (Point2{0.75f, 0.6f}));    // −z face: right is −x
   EXPECT_EQ(unit_cube_normal({0.3f, 0.6f, 1}), Normal3(0, 0, 1));
   EXPECT_EQ(unit_cube_normal({0, 0.6f, 0.2f}), Normal3(-1, 0, 0));
 }

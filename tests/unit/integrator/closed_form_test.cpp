@@ -24,7 +24,7 @@ RenderJob looking_down(float height, int size, float fovy) {
 }
 
 /// Where the ray through pixel centre (i, j) of `looking_down` meets the plane y = 0,
-/// computed from the pinhole model independently of PinholeCamera.
+/// computed from the pinhole model independently of Camera.
 Point3 floor_point(int i, int j, float height, int size, float fovy) {
   const double half = std::tan(double(fovy) * std::numbers::pi / 360.0);
   const double sx = (2 * (i + 0.5) / size - 1) * half, sy = (1 - 2 * (j + 0.5) / size) * half;
@@ -262,6 +262,43 @@ TEST(ClosedForm, GlossyReflectionBlursAStepEdgeOverItsCone) {
     const double expected = reflectivity * white_fraction(p, height, alpha);
     EXPECT_NEAR(seen.r, expected, 0.01) << "offset " << offset << " of the cone";
   }
+}
+
+TEST(ClosedForm, GlossyWithOneSampleIsOnePerturbedRayWhoseMeanIsTheBlur) {
+  // The step-edge ceiling above: one glossy sample is one ray somewhere in the cone, so single
+  // samples scatter between black and white where the cone straddles the edge, and their mean
+  // is the blur that many samples give. A mirror would show one value.
+  const float height = 10, reflectivity = 0.8f;
+  const double alpha = (1 - reflectivity) * std::numbers::pi / 4;
+  auto scene = [&](int samples) {
+    RenderJob job;
+    job.root = test::group({test::box({-100, -1, -100}, {100, 0, 100},
+                                      GlossyMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, reflectivity, samples}),
+                            test::box({0, height, -100}, {100, height + 1, 100}, PhongMaterial{{1, 1, 1}, {0, 0, 0}, 1}),
+                            test::box({-100, height, -100}, {0, height + 1, 100}, PhongMaterial{{0, 0, 0}, {0, 0, 0}, 1})});
+    job.ambient = {1, 1, 1};
+    job.lights = {kDark};
+    return job;
+  };
+  const test::TestJob one(scene(1)), many(scene(1024));
+  const double p = height * std::tan(-0.3 * alpha);  // the mirror ray sees black
+  const Ray ray{{float(p), 1, 0}, {0, -1, 0}};
+  constexpr int kTrials = 4000;
+  double sum = 0;
+  int white = 0;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    RayCounters counters;
+    const Color c = one.radiance(ray, &counters, uint64_t(trial));
+    ASSERT_EQ(counters.secondary, 1u) << "one sample is one ray";
+    ASSERT_TRUE(c.r == 0 || std::abs(c.r - reflectivity) < 1e-6f) << c.r;
+    sum += c.r;
+    white += c.r > 0;
+  }
+  const double share = reflectivity * white_fraction(p, height, alpha);  // about 0.3 of 0.8
+  const double sigma = std::sqrt(share * (reflectivity - share) / kTrials);
+  EXPECT_GT(white, kTrials / 10) << "some single rays leave the mirror direction and see white";
+  EXPECT_NEAR(sum / kTrials, share, 4 * sigma);
+  EXPECT_NEAR(sum / kTrials, many.radiance(ray).r, 4 * sigma + 0.01);
 }
 
 }  // namespace

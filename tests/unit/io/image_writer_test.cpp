@@ -214,10 +214,10 @@ TEST(ImageWriterFormat, UnknownExtensionIsRejected) {
   const fs::path path = dir / "out.xyz";
   EXPECT_EQ(write_error(distinct_image(), path),
             "cannot write '" + path.string() +
-                "': unsupported image format '.xyz' (mjray writes .png, .ppm)");
+                "': unsupported image format '.xyz' (mjray writes .png, .ppm, .jpg, .jpeg, .exr)");
   EXPECT_EQ(write_error(distinct_image(), dir / "noext"),
             "cannot write '" + (dir / "noext").string() +
-                "': unsupported image format '' (mjray writes .png, .ppm)");
+                "': unsupported image format '' (mjray writes .png, .ppm, .jpg, .jpeg, .exr)");
   EXPECT_TRUE(file_names(dir).empty());
 }
 

@@ -15,7 +15,7 @@
 
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/accel/brute_force.h"
-#include "mjray/camera/pinhole_camera.h"
+#include "mjray/camera/camera.h"
 #include "mjray/core/error.h"
 #include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"

@@ -1,0 +1,74 @@
+#include "job_images.h"
+
+#include <cstdio>
+#include <system_error>
+
+#include "mjray/core/error.h"
+#include "mjray/io/image_codec.h"
+#include "mjray/io/image_reader.h"
+#include "mjray/job/job_fingerprint.h"
+
+namespace mjray {
+
+namespace {
+
+constexpr const char* kFingerprintKey = "mjray job";
+
+/// The fingerprint a finished image records, or "" when it records none.
+std::string recorded_fingerprint(const std::filesystem::path& image) {
+  for (const auto& [key, value] : read_image_metadata(image))
+    if (key == kFingerprintKey) return value;
+  return "";
+}
+
+/// With --resume and a complete image (no state beside it): true when this scene and these
+/// options made it; else throws SceneError saying what differs.
+bool complete_image_matches(const std::filesystem::path& image, const std::string& fingerprint) {
+  const std::string recorded = recorded_fingerprint(image);
+  const std::string advice = "; render without --resume to start again, or remove the image to render just it again";
+  if (recorded.empty())
+    throw SceneError(image.string() + ": --resume keeps a complete image only when it records the scene and options "
+                     "that made it, and this one records none (a partial image whose state file is gone, or not "
+                     "written by mjray)" + advice);
+  if (recorded != fingerprint)
+    throw SceneError(image.string() + ": --resume keeps a complete image only when this scene and these options made "
+                     "it, and a different scene or different options made this one (" +
+                     fingerprint_difference(recorded, fingerprint) + ")" + advice);
+  return true;
+}
+
+}  // namespace
+
+ResumePlan plan_resume(const std::filesystem::path& image, const std::string& fingerprint, bool resume) {
+  ResumePlan plan;
+  if (!resume) return plan;
+  const auto state_path = checkpoint_path(image);
+  std::error_code ec;
+  if (std::filesystem::exists(state_path, ec)) {
+    plan.state = read_checkpoint(state_path);
+    if (plan.state->fingerprint != fingerprint)
+      throw SceneError(state_path.string() + ": this resume state was saved by a different scene or different options (" +
+                       fingerprint_difference(plan.state->fingerprint, fingerprint) + "); render without --resume to start again");
+    return plan;
+  }
+  plan.keep = std::filesystem::exists(image, ec) && complete_image_matches(image, fingerprint);
+  return plan;
+}
+
+void write_finished_image(const Image& image, const std::filesystem::path& path, EncodeOptions encoding,
+                          const std::string& fingerprint) {
+  encoding.metadata.emplace_back(kFingerprintKey, fingerprint);
+  write_image(image, path, encoding);
+  std::error_code ec;
+  std::filesystem::remove(checkpoint_path(path), ec);
+}
+
+void write_interrupted_image(const RenderCheckpoint& checkpoint, const std::filesystem::path& path,
+                             const EncodeOptions& encoding) {
+  write_image(checkpoint.film.resolve(), path, encoding);
+  write_checkpoint(checkpoint, checkpoint_path(path));
+  std::fprintf(stderr, "mjray: interrupted: wrote the partial image %s and its state; run again with --resume to finish\n",
+               path.string().c_str());
+}
+
+}  // namespace mjray

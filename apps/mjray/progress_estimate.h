@@ -1,0 +1,65 @@
+#pragma once
+/// How much of a render is done and how long the rest will take, counting the anti-aliasing
+/// work before it is planned: estimated from the share of bad pixels, corrected as each pass
+/// is planned.
+
+#include <vector>
+
+#include "mjray/core/image.h"
+#include "mjray/render/image_render.h"
+
+namespace mjray {
+
+/// What the progress display shows.
+struct ProgressView {
+  double fraction = 0;     ///< of the work done, estimate included; below 1 until finished
+  double eta_seconds = 0;  ///< the rest at the rate so far; 0 when unknown
+  /// The anti-aliasing pass under way, as the statistics count passes (0: first pass, or none
+  /// planned yet); with choosing_pixels, the next pass is being planned.
+  int antialias_pass = 0;
+  bool choosing_pixels = false;
+};
+
+/// Turns the counters of one ImageRender into a ProgressView.
+class ProgressEstimate {
+ public:
+  /// width × height: the pixels the render traces (ImageRender::region()).
+  ProgressEstimate(int width, int height, const RenderSettings& settings);
+
+  /// Every tick: the render's counters and the seconds since this run started.
+  void update(const RenderProgress& progress, double elapsed);
+  /// Now and then during the first pass: the share of finished pixels that the first
+  /// anti-aliasing pass will supersample (see supersample_share).
+  void set_first_pass_share(double share) { first_pass_share_ = share; }
+  ProgressView view() const;
+
+  /// Later passes are assumed to shrink by this factor per pass until two are known.
+  static constexpr double kLaterPassRatio = 0.25;
+  /// Seconds of anti-aliasing before its own rate is trusted.
+  static constexpr double kRateSettleSeconds = 0.5;
+
+ private:
+  /// Anti-aliasing samples expected beyond those already planned.
+  double unplanned_samples() const;
+
+  double first_pass_samples_;
+  double samples_per_pixel_;  // 0 without anti-aliasing
+  int max_passes_;
+  double first_pass_share_ = 0;
+  RenderProgress last_;
+  double elapsed_ = 0;
+  double first_ = -1;                // samples done when this run began (a resume starts with some)
+  double antialias_start_ = -1;      // seconds into this run when anti-aliasing began
+  double first_pass_seconds_ = 0;
+  double antialias_start_done_ = 0;  // samples done then
+  std::vector<double> pass_pixels_;  // pixels of each pass seen planned in this run
+  int planned_pass_ = 0;             // the pass whose plan was seen last
+};
+
+/// The share of finished first-pass pixels that the first anti-aliasing pass would choose
+/// (bad pixels and their neighbours), judged within the tiles of `snapshot` that are
+/// finished: those with a pixel that is not black (ImageRender::snapshot leaves unfinished
+/// tiles black). 0 when no tile is finished.
+double supersample_share(const Image& snapshot, int tile_size, float threshold);
+
+}  // namespace mjray

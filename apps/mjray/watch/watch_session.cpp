@@ -1,0 +1,125 @@
+#include "watch_session.h"
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#include "file_watcher.h"
+#include "live_state.h"
+#include "local_render.h"
+#include "preview_server.h"
+#include "progressive_render.h"
+#include "render_watcher.h"
+#include "mjray/job/job_outputs.h"
+#include "mjray/lua/scene_loader.h"
+
+namespace mjray {
+
+namespace {
+
+using std::chrono::milliseconds;
+
+/// How often the files are looked at while nothing renders.
+constexpr milliseconds kPollInterval{100};
+/// How long the files must stay unchanged after a save before the render starts again.
+constexpr milliseconds kQuietPeriod{200};
+
+/// How one round of the loop ended.
+enum class RoundEnd { kFinished, kFailed, kStale, kInterrupted };
+
+/// Runs the script with the default Ctrl-C: a script stuck in a loop can then still be
+/// ended, and nothing is lost (nothing renders while it runs).
+SceneDescription load_interruptibly(const CommandLine& cl, std::vector<std::filesystem::path>& inputs_read) {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  struct Reinstall {
+    ~Reinstall() { install_interrupt_handlers(); }
+  } reinstall;
+  SceneLoadOptions load = cl.load;
+  load.inputs_read = &inputs_read;
+  return load_scene(cl.scene, load);
+}
+
+/// One round: run the script, then render and write each frame as `mjray scene.lua` would,
+/// each progressively on the page. The files to watch are updated once the script ran.
+RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveState& page, FileWatcher& files) {
+  page.begin_render();
+  std::vector<std::filesystem::path> read;  // what the script read, also when it failed
+  try {
+    const auto start = std::chrono::steady_clock::now();
+    const SceneDescription scene = load_interruptibly(cl, read);
+    const double parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<std::filesystem::path> watched = {cl.scene};
+    watched.insert(watched.end(), scene.inputs.begin(), scene.inputs.end());
+    files.watch(watched);
+    for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (!cl.quiet)
+      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
+    for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
+
+    std::vector<FrameDescription> frames;
+    for (size_t i = 0; i < scene.jobs.size(); ++i)
+      frames.push_back({output_path(scene, i, options.outputs).filename().string(), scene.jobs[i].width,
+                        scene.jobs[i].height});
+    page.set_frames(frames);
+
+    // Compute each frame as the local driver does, with the coarse pass and the page added.
+    const JobFingerprints fingerprints(scene, options);
+    std::vector<JobStatistics> statistics;
+    LocalRunOptions run{cl.quiet, cl.print_stats, false};
+    run.snapshot_interval_seconds = 0;  // the page shows the progress; the file gets the result
+    for (size_t i = 0; i < scene.jobs.size(); ++i) {
+      run.run_render = ProgressiveRender(page, i, options.render, [&files] { return files.changed(); });
+      const auto stats = render_job_locally(scene, i, options, fingerprints, run, parse_seconds);
+      page.finish_frame(i, *stats);
+      statistics.push_back(*stats);
+      if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
+    }
+    page.finish_render();
+    return RoundEnd::kFinished;
+  } catch (const RenderSuperseded&) {
+    return RoundEnd::kStale;
+  } catch (const Interrupted&) {
+    return RoundEnd::kInterrupted;
+  } catch (const std::exception& e) {
+    // A script or output error: the page shows it and keeps the last good images. A module
+    // or file the script read before it failed is watched too, so that fixing it is seen.
+    std::vector<std::filesystem::path> watched = {cl.scene};
+    watched.insert(watched.end(), read.begin(), read.end());
+    files.watch(watched);
+    std::fprintf(stderr, "mjray: error: %s\n", e.what());
+    page.fail(e.what());
+    return RoundEnd::kFailed;
+  }
+}
+
+}  // namespace
+
+int run_watch_session(const CommandLine& cl) {
+  const JobOptions options = job_options(cl);
+  LiveState page(cl.scene.filename().string(), options.outputs.encoding);
+  const std::string address = cl.listen.value_or("127.0.0.1");
+  const PreviewServer server(page, address, cl.port.value_or(kDefaultWatchPort));
+  if (!is_loopback_address(address))
+    std::fprintf(stderr, "mjray: warning: --listen %s: anyone who can reach this machine on port %d can see the renders\n",
+                 address.c_str(), server.port());
+  std::fprintf(stderr, "mjray: live preview of %s at %s (Ctrl-C to stop)\n", cl.scene.string().c_str(),
+               server.url().c_str());
+
+  install_interrupt_handlers();
+  FileWatcher files;
+  files.watch({cl.scene});
+  for (;;) {
+    files.accept();
+    const RoundEnd end = render_round(cl, options, page, files);
+    if (end == RoundEnd::kInterrupted) return 130;
+    if (end != RoundEnd::kStale && !files.wait_for_change(kPollInterval, interrupted)) return 0;
+    if (!cl.quiet) std::fprintf(stderr, "mjray: the scene changed; rendering again\n");
+    if (!files.settle(kQuietPeriod, interrupted)) return 0;
+  }
+}
+
+}  // namespace mjray

@@ -1,0 +1,75 @@
+#include "frame_render.h"
+
+#include <algorithm>
+
+#include "local_render.h"
+#include "mjray/job/prepared_job.h"
+#include "mjray/render/tile_layout.h"
+
+namespace mjray {
+
+namespace {
+
+size_t count_done(const std::vector<uint8_t>& flags) { return size_t(std::count(flags.begin(), flags.end(), uint8_t(1))); }
+
+}  // namespace
+
+FrameOutcome FrameRender::run(const SceneDescription& scene, size_t index, const JobOptions& options,
+                              const std::optional<RenderCheckpoint>& state, const RankStatistics& rank) {
+  FrameOutcome outcome;
+  try {
+    const PreparedJob job(scene, index, options);
+    JobStatistics stats = prepared_job_statistics(job, rank.seconds_load);
+    ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render);
+    if (state) render.resume_from(*state);
+
+    // Compute the image unless a stop came first.
+    bool finished = false;
+    {
+      std::unique_lock lock(mutex_);
+      if (!stop_) {
+        current_ = &render;
+        lock.unlock();
+        finished = render.run();
+        lock.lock();
+        current_ = nullptr;
+      }
+    }
+    stats.render = render.stats();
+    stats.seconds_render = stats.render.seconds;
+    stats.peak_rss_bytes = peak_rss_bytes();
+
+    // Compute what this rank did, and the image or the state to resume from.
+    FrameDoneMessage& done = outcome.done;
+    done.job = uint32_t(index);
+    done.finished = finished;
+    RankStatistics r = rank;
+    r.threads = stats.render.threads;
+    r.seconds_build = job.build_seconds();
+    r.seconds_rendering = stats.render.seconds * stats.render.threads;
+    r.pixels_supersampled = stats.render.pixels_supersampled;
+    r.rays = stats.render.rays.total();
+    const size_t done_before = state ? count_done(state->tile_done) : 0;
+    if (finished) {
+      done.image = render.image();
+      r.tiles = size_t(TileLayout{job.width(), job.height(), std::max(1, options.render.tile_size)}.count()) - done_before;
+    } else {
+      const RenderCheckpoint checkpoint = render.checkpoint();
+      r.tiles = count_done(checkpoint.tile_done) - done_before;
+      done.checkpoint = encode_checkpoint(checkpoint);
+    }
+    stats.ranks = {r};
+    done.stats = std::move(stats);
+  } catch (const std::exception& e) {
+    outcome.error = e.what();
+  }
+  return outcome;
+}
+
+void FrameRender::request_stop() {
+  std::lock_guard lock(mutex_);
+  stop_ = true;
+  if (current_) current_->request_stop();
+}
+
+}  // namespace mjray

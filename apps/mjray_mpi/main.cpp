@@ -1,0 +1,144 @@
+// mjray-mpi: the mjray recipe over the ranks of an MPI job. Every rank reads the command line,
+// runs the scene script and agrees with the others that all loaded the same scene; rank 0
+// checks the outputs, then hands out whole frames or tiles and writes every image, while the
+// other ranks render what they are given.
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "agreement.h"
+#include "cli.h"
+#include "coordinator.h"
+#include "job_split.h"
+#include "local_render.h"
+#include "mpi_world.h"
+#include "rank_failed.h"
+#include "render_watcher.h"
+#include "worker.h"
+#include "mjray/job/job_outputs.h"
+#include "mjray/lua/scene_loader.h"
+
+namespace {
+
+using namespace mjray;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string usage() {
+  return R"(usage: mpirun -np N mjray-mpi [options] scene.lua
+
+Renders what mjray renders, over the N ranks of an MPI job, to the same bytes. Every rank runs
+the scene script and builds each scene it renders; rank 0 hands out the work, renders too, and
+writes every image, the resume state and the statistics. Progress, warnings and errors come
+from rank 0 only.
+
+mjray-mpi's own option:
+  --distribute auto|tiles|frames
+                       the unit of work handed out: tiles of one image (every rank renders
+                       each image), or whole images of an animation (each rank renders its
+                       own); default auto: whole images while there are enough to keep every
+                       rank busy, tiles for the rest
+  -j N                 threads per rank (default: the host's cores shared among its ranks)
+
+mpirun's --quiet leaves out its own banners when a run fails or is interrupted; as root it
+needs --allow-run-as-root, and beyond the host's cores --oversubscribe.
+
+)" + usage_text();
+}
+
+void print_error(const std::string& message) { std::fprintf(stderr, "mjray: error: %s\n", message.c_str()); }
+
+/// Each job's fingerprint, one after another: what every rank must agree on.
+std::string all_fingerprints(const JobFingerprints& fingerprints, size_t jobs) {
+  std::string text = "gr.render calls=" + std::to_string(jobs) + "\n";
+  for (size_t i = 0; i < jobs; ++i) text += fingerprints.of(i);
+  return text;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::signal(SIGXFSZ, SIG_IGN);
+  MpiWorld world(argc, argv);
+  const bool root = world.rank() == 0;
+
+  // Compute the command line: the driver's own option, then mjray's.
+  CommandLine cl;
+  Distribution distribution = Distribution::kAuto;
+  try {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    distribution = take_distribution(args);
+    cl = parse_command_line(args);
+  } catch (const UsageError& e) {
+    if (!root) return 0;
+    std::fprintf(stderr, "mjray: %s\n(run 'mjray-mpi --help' for the options)\n", e.what());
+    return 2;
+  }
+  if (cl.show_help || cl.show_version) {
+    if (root && cl.show_help) std::fputs(usage().c_str(), stdout);
+    else if (root) std::printf("mjray-mpi %s\n", MJRAY_VERSION);
+    return 0;
+  }
+  if (root)
+    for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+  if (cl.threads == 0) cl.threads = std::max(1, int(std::thread::hardware_concurrency()) / world.ranks_on_host());
+
+  // Compute the scene on every rank, and agree that all have it, and the same one.
+  const auto start = std::chrono::steady_clock::now();
+  SceneDescription scene;
+  std::string load_error;
+  try {
+    scene = load_scene(cl.scene, cl.load);
+  } catch (const std::exception& e) {
+    load_error = e.what();
+  }
+  const double load_seconds = seconds_since(start);
+  std::vector<RankStatistics> ranks;
+  if (const auto errors = agree_on_load(world, load_seconds, load_error, ranks); !errors.empty()) {
+    if (!root) return 0;  // rank 0's exit code stands for the run
+    for (const auto& e : errors) print_error(e);
+    return 1;
+  }
+  const JobOptions options = job_options(cl);
+  const JobFingerprints fingerprints(scene, options);
+  if (const std::string verdict = agree_on_scene(world, all_fingerprints(fingerprints, scene.jobs.size()), ranks);
+      !verdict.empty()) {
+    if (!root) return 0;
+    print_error(verdict);
+    return 1;
+  }
+  // Every rank keeps going until rank 0 ends the run (mpirun signals them all on Ctrl-C).
+  install_interrupt_handlers();
+  if (!root) return run_worker(world, scene, options, {world.rank(), world.host(), 0, load_seconds});
+
+  try {
+    for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (!cl.quiet)
+      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
+    for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
+    const RunSetup setup{scene, options, fingerprints, {cl.quiet, cl.print_stats, cl.resume}, cl.stats_json,
+                         distribution, ranks};
+    run_coordinator(world, setup);
+  } catch (const Interrupted&) {
+    end_run(world);
+    return 130;
+  } catch (const RankFailed& e) {
+    print_error(rank_name(e.rank(), ranks[size_t(e.rank())].host) + ": " + e.what());
+    end_run(world);
+    return 1;
+  } catch (const std::exception& e) {
+    print_error(e.what());
+    end_run(world);
+    return 1;
+  }
+  end_run(world);
+  return 0;
+}

@@ -1,0 +1,34 @@
+#include "work_unit.h"
+
+#include <utility>
+
+#include "mjray/core/error.h"
+
+namespace mjray {
+
+std::vector<FilmPixel> render_unit(const ImageSampler& sampler, const TileLayout& layout, const WorkUnit& unit,
+                                   Film& scratch, TraceState& state) {
+  std::vector<FilmPixel> values;
+  if (unit.kind == WorkUnit::Kind::kPixels) {
+    values.reserve(unit.pixels.size());
+    for (const int32_t p : unit.pixels) values.push_back(sampler.supersample(p % sampler.width(), p / sampler.width(), state));
+    return values;
+  }
+  // The first pass adds to the film, so the rectangle starts empty and is emptied again.
+  const PixelRect r = layout.rect(unit.id);
+  sampler.first_pass(r, scratch, state);
+  values.reserve(size_t(r.pixel_count()));
+  for (int y = r.y0; y < r.y1; ++y)
+    for (int x = r.x0; x < r.x1; ++x) values.push_back(std::exchange(scratch.at(x, y), FilmPixel{}));
+  return values;
+}
+
+void store_tile(const TileLayout& layout, int tile, const std::vector<FilmPixel>& values, Film& film) {
+  const PixelRect r = layout.rect(tile);
+  MJRAY_CHECK(values.size() == size_t(r.pixel_count()));
+  size_t k = 0;
+  for (int y = r.y0; y < r.y1; ++y)
+    for (int x = r.x0; x < r.x1; ++x) film.at(x, y) = values[k++];
+}
+
+}  // namespace mjray
