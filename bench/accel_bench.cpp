@@ -29,7 +29,7 @@
 #include "mjray/core/rng.h"
 #include "mjray/geometry/spawn_ray.h"
 #include "mjray/io/obj_loader.h"
-#include "mjray/render/parallel_for.h"
+#include "mjray/core/parallel_for.h"
 #include "mjray/scene/world.h"
 
 namespace {

@@ -48,6 +48,15 @@ size_t parse_bytes(const std::string& option, const std::string& text) {
   return size_t(bytes);
 }
 
+/// A photon count: a whole number written plainly or in exponent form ("1e6"), 0 to 10⁹.
+uint64_t parse_photon_count(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value >= 0 && value <= 1e9) || value != std::floor(value))
+    throw UsageError(option + " expects a number of photons from 0 to 1e9 (e.g. 200000 or 1e6), got '" + text + "'");
+  return uint64_t(value);
+}
+
 /// A number in (lo, hi], for --aa-threshold and --scene-timeout.
 double parse_real(const std::string& option, const std::string& text, double lo, double hi, const std::string& expected) {
   char* end = nullptr;
@@ -194,6 +203,8 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--scene-timeout", [&](auto& o, auto& v) {
          cl.load.timeout_seconds = parse_real(o, v, 0, 1e6, "a number of seconds from 0 to 1000000");
        }},
+      {"--caustics", [&](auto& o, auto& v) { cl.caustic_photons = parse_photon_count(o, v); }},
+      {"--gi", [&](auto& o, auto& v) { cl.global_photons = parse_photon_count(o, v); }},
       {"--output", [&](auto&, auto& v) { cl.output = v; }},
       {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
       {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},
@@ -373,6 +384,8 @@ options:
   --transform-order pre|post|auto
                        how node transforms compose (default auto: post when the first
                        gr.render draws a table-form gr.mesh or a gr.extendedmesh, else pre)
+  --caustics N         photon-mapped caustics from N photons (e.g. 1e6; default 0: off)
+  --gi N               global illumination: N photons and final gathering (default 0: off)
   --quiet              only warnings and errors (and the statistics that --stats asks for)
   --resume             finish an interrupted render or animation: keep complete images,
                        resume the interrupted one, render the rest
@@ -409,6 +422,8 @@ JobOptions job_options(const CommandLine& cl) {
   o.render.seed = cl.seed;
   o.render.antialias_samples = cl.antialias_samples;
   o.render.antialias_threshold = cl.antialias_threshold;
+  o.photons.caustic_photons = cl.caustic_photons;
+  o.photons.global_photons = cl.global_photons;
   o.outputs.output = cl.output;
   o.outputs.outdir = cl.outdir;
   o.outputs.confine_script_outputs = !cl.load.unsafe_lua;

@@ -45,6 +45,10 @@ struct CommandLine {
   int bit_depth = 8;                   // --bit-depth
   int jpeg_quality = 90;               // --jpeg-quality
 
+  // Photon mapping: photons emitted, 0 = off.
+  uint64_t caustic_photons = 0;        // --caustics
+  uint64_t global_photons = 0;         // --gi
+
   // The live preview (apps/mjray/watch/).
   bool watch = false;                  // --watch
   std::optional<int> port;             // --port; 0 = any free port; default kDefaultWatchPort

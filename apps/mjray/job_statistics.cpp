@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <utility>
 
 #include <sys/resource.h>
 
@@ -21,6 +22,48 @@ uint64_t peak_rss_bytes() {
   return uint64_t(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
+namespace {
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+/// The summary's photon lines, or nothing without photon maps.
+std::string photon_text(const JobStatistics& s) {
+  if (!s.photons) return "";
+  const PhotonStatistics& p = *s.photons;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "  photons   caustic %llu emitted, %llu stored; global %llu emitted, %llu stored, %llu irradiance "
+                "samples; %.1f MiB\n"
+                "  photon pass %.3fs: trace %.3fs (%llu rays), kd-trees %.3fs, irradiance %.3fs\n",
+                (unsigned long long)p.caustic_emitted, (unsigned long long)p.caustic_stored,
+                (unsigned long long)p.global_emitted, (unsigned long long)p.global_stored,
+                (unsigned long long)p.irradiance_samples, double(p.memory_bytes) / kMiB, p.seconds(), p.seconds_trace,
+                (unsigned long long)p.rays, p.seconds_build, p.seconds_irradiance);
+  return text;
+}
+
+/// The photon fields of a job's JSON object (with a leading comma), or nothing.
+std::string photon_json(const JobStatistics& s) {
+  if (!s.photons) return "";
+  const PhotonStatistics& p = *s.photons;
+  const std::pair<const char*, double> fields[] = {
+      {"photons_caustic_emitted", double(p.caustic_emitted)}, {"photons_caustic_stored", double(p.caustic_stored)},
+      {"photons_global_emitted", double(p.global_emitted)},   {"photons_global_stored", double(p.global_stored)},
+      {"photon_irradiance_samples", double(p.irradiance_samples)}, {"photon_rays", double(p.rays)},
+      {"seconds_photons", p.seconds()},                        {"seconds_photon_trace", p.seconds_trace},
+      {"seconds_photon_build", p.seconds_build},               {"seconds_photon_irradiance", p.seconds_irradiance},
+      {"photon_map_bytes", double(p.memory_bytes)}};
+  std::string out;
+  for (const auto& [key, value] : fields) {
+    char field[96];
+    std::snprintf(field, sizeof field, ", \"%s\": %.10g", key, value);
+    out += field;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string summary_text(const JobStatistics& s) {
   const std::string grid = s.grid_resolution ? " " + std::to_string(s.grid_resolution) + "³" : "";
   char text[1024];
@@ -34,8 +77,8 @@ std::string summary_text(const JobStatistics& s) {
                 s.seconds_render, s.render.threads, (unsigned long long)s.render.rays.primary,
                 (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
                 s.rays_per_second() / 1e6, (unsigned long long)s.render.pixels_supersampled,
-                s.render.antialias_passes, double(s.peak_rss_bytes) / (1024.0 * 1024.0));
-  std::string summary = text;
+                s.render.antialias_passes, double(s.peak_rss_bytes) / kMiB);
+  std::string summary = text + photon_text(s);
   for (const RankStatistics& r : s.ranks) {
     std::snprintf(text, sizeof text,
                   "  rank %-4d %s: load %.3fs, build %.3fs, rendering %.3fs on %d threads, %llu tiles, "
@@ -76,6 +119,19 @@ std::string animation_summary(const std::vector<JobStatistics>& frames, size_t k
     all.primitives = std::max(all.primitives, s.primitives);
     all.peak_rss_bytes = std::max(all.peak_rss_bytes, s.peak_rss_bytes);
     if (all.accel.empty()) all.accel = s.accel;
+    if (s.photons) {
+      PhotonStatistics& p = all.photons ? *all.photons : all.photons.emplace();
+      p.caustic_emitted += s.photons->caustic_emitted;
+      p.caustic_stored += s.photons->caustic_stored;
+      p.global_emitted += s.photons->global_emitted;
+      p.global_stored += s.photons->global_stored;
+      p.irradiance_samples += s.photons->irradiance_samples;
+      p.rays += s.photons->rays;
+      p.seconds_trace += s.photons->seconds_trace;
+      p.seconds_build += s.photons->seconds_build;
+      p.seconds_irradiance += s.photons->seconds_irradiance;
+      p.memory_bytes = std::max(p.memory_bytes, s.photons->memory_bytes);
+    }
   }
   char head[256];
   const std::string kept_text = kept > 0 ? " (" + std::to_string(kept) + " kept)" : "";
@@ -134,6 +190,7 @@ std::string statistics_json(const JobStatistics& s) {
                 s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
                 (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
   std::string out = "{\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers;
+  out += photon_json(s);
   if (!s.ranks.empty()) out += ranks_json(s.ranks);
   return out + "}";
 }

@@ -3,9 +3,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "mjray/integrator/photon/photon_statistics.h"
 #include "mjray/render/image_render.h"
 
 namespace mjray {
@@ -35,9 +37,11 @@ struct JobStatistics {
   int grid_resolution = 0;  ///< voxels per axis of --accel grid; 0 for other accelerators
   RenderStats render;
   uint64_t peak_rss_bytes = 0;
+  std::optional<PhotonStatistics> photons;  ///< with --caustics or --gi
   std::vector<RankStatistics> ranks;  ///< under MPI: each rank that took part
 
-  double seconds_total() const { return seconds_parse + seconds_build + seconds_render; }
+  double seconds_photons() const { return photons ? photons->seconds() : 0; }
+  double seconds_total() const { return seconds_parse + seconds_build + seconds_photons() + seconds_render; }
   double rays_per_second() const;
 };
 

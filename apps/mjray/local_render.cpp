@@ -39,6 +39,7 @@ JobStatistics prepared_job_statistics(const PreparedJob& job, double parse_secon
   stats.primitives = job.world().primitive_count();
   stats.accel = std::string(job.accelerator().name());
   if (const auto* grid = dynamic_cast<const UniformGrid*>(&job.accelerator())) stats.grid_resolution = grid->resolution();
+  if (job.photon_statistics()) stats.photons = *job.photon_statistics();
   return stats;
 }
 

@@ -1,5 +1,5 @@
 // mjray-mpi under mpirun: the same bytes as mjray for 1, 2 and 3 ranks (a corpus scene, an
-// anti-aliased glass scene, a 6-frame animation), a rank that cannot read a mesh ends the job
+// anti-aliased glass scene, a 6-frame animation, photon maps), a rank that cannot read a mesh ends the job
 // with one message and no image, SIGINT writes the partial image and --resume finishes it to
 // the same bytes, and the statistics come from rank 0 with one entry per rank. Skipped when
 // Open MPI was absent at configure time (scripts/setup.sh installs it).
@@ -141,6 +141,23 @@ TEST_F(MpiRender, GlassSceneWithAntialiasingIsTheSameBytesForOneTwoAndThreeRanks
                                          "--distribute", "tiles", "--output", out.string(), scene.string()}),
                   log), 0) << read_file(log);
     EXPECT_EQ(read_file(out), reference) << "np " << c.ranks << " -j " << c.threads << " --accel " << c.accel;
+  }
+}
+
+TEST_F(MpiRender, PhotonMapsAreTheSameBytesForOneAndTwoRanks) {
+  // Every rank builds the same caustic and global maps (photons keyed by the seed), so the
+  // ranks' tiles agree with mjray's image.
+  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
+  const std::vector<std::string> photons = {"--caustics", "20000", "--gi", "4000", "--seed", "3"};
+  ASSERT_EQ(run(mjray(plus(plus({"--quiet"}, photons), {"--output", (dir_ / "ref.png").string(), scene.string()}))), 0);
+  const std::string reference = read_file(dir_ / "ref.png");
+  ASSERT_FALSE(reference.empty());
+  for (const int ranks : {1, 2}) {
+    const auto out = dir_ / ("np" + std::to_string(ranks) + ".png");
+    const auto log = dir_ / "log.txt";
+    ASSERT_EQ(run(plus(plus(mpirun(ranks), {"--quiet", "-j", "1"}), plus(photons, {"--output", out.string(), scene.string()})),
+                  log), 0) << read_file(log);
+    EXPECT_EQ(read_file(out), reference) << ranks << " ranks";
   }
 }
 

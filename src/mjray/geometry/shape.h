@@ -3,8 +3,8 @@
 /// by a transform (gr.sphere and gr.nh_sphere, gr.cube and gr.nh_box).
 ///
 /// To add a shape: write `<name>.h/.cpp` with the unit primitive's intersection, a struct
-/// below with `object_bounds()`, `intersect(object_ray, t_range)`, `surface(object_point)`
-/// and `uv(surface_point)`,
+/// below with `object_bounds()`, `object_bounding_sphere()`, `intersect(object_ray, t_range)`,
+/// `surface(object_point)` and `uv(surface_point)`,
 /// add it to `Shape`, bind it in `lua/gr_bindings.cpp`, and test it in
 /// `tests/unit/geometry/geometry_test.cpp` (the accelerator oracles then cover it).
 
@@ -24,9 +24,16 @@ struct ShapeSurface {
   Normal3 normal;  ///< outward, not necessarily unit
 };
 
+/// A ball holding a shape, in its own frame.
+struct BoundingSphere {
+  Point3 centre;
+  float radius = 0;
+};
+
 /// The unit sphere at the origin.
 struct UnitSphere {
   static Bounds3 object_bounds() { return unit_sphere_bounds(); }
+  static BoundingSphere object_bounding_sphere() { return {{0, 0, 0}, 1}; }
   static std::optional<float> intersect(const Ray& object_ray, Interval t_range) {
     return intersect_unit_sphere(object_ray, t_range);
   }
@@ -41,6 +48,7 @@ struct UnitSphere {
 /// The unit cube [0,1]³.
 struct UnitCube {
   static Bounds3 object_bounds() { return unit_cube_bounds(); }
+  static BoundingSphere object_bounding_sphere() { return {{0.5f, 0.5f, 0.5f}, 0.8660254f}; }
   static std::optional<float> intersect(const Ray& object_ray, Interval t_range) {
     return intersect_unit_cube(object_ray, t_range);
   }

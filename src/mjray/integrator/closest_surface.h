@@ -16,4 +16,11 @@ namespace mjray {
 /// point's error bound (surface_offset) of it, measured along the ray.
 std::optional<SurfaceInteraction> closest_surface(const World& world, const Accelerator& accel, const Ray& ray);
 
+/// The frame a surface is shaded in when a ray along `direction` meets it: wo back along the
+/// ray, the shading normal turned toward it.
+inline ShadingFrame frame_facing(const SurfaceInteraction& si, const Vector3& direction) {
+  const Vector3 wo = normalize(-direction);
+  return {wo, face_forward(si.shading_normal, wo), si.geometric_normal};
+}
+
 }  // namespace mjray

@@ -28,7 +28,14 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random
   // The specular lobes draw their samples first, then direct light: the order is part of
   // the image.
   const Color specular = specular_light(si, frame, specular_lobes(material, frame), depth, random, state);
-  return direct_light(si, frame, local, random, state) + specular;
+  return surface_light(si, frame, local, depth.weight, random, state) + specular;
+}
+
+Color WhittedIntegrator::surface_light(const SurfaceInteraction& si, const ShadingFrame& frame,
+                                       const LocalShading& local, float weight, RandomStream& random,
+                                       TraceState& state) const {
+  const Color direct = direct_light(si, frame, local, random, state);
+  return indirect_ ? direct + indirect_->radiance(si, frame, local, weight, random, state.rays) : direct;
 }
 
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const ShadingFrame& frame,
@@ -94,6 +101,11 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   uint32_t* cached = state.occluders.slot(light_index);
   if (cached && *cached != OccluderCache::kNone && world_.primitives.intersect(*cached, shadow, {0, kShadowTMax}))
     return {};
+  // With a caustic photon map glass shadows like any object: the map brings its light.
+  if (!settings_.transmissive_shadows && world_.primitives.any_transmissive()) {
+    if (accel_.occluded(shadow, kShadowTMax)) return {};
+    return local.phong(frame, l, n_dot_l) * sample.intensity;
+  }
   // Through glass: what the transmissive surfaces on the way let pass.
   const ShadowResult through = shadow_ray_transmittance(world_, accel_, shadow, kShadowTMax);
   if (through.blocker && cached) *cached = *through.blocker;
@@ -150,7 +162,8 @@ Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const 
     const Material& material = world_.materials[found->material];
     const Vector3 wo = normalize(-direction);
     const ShadingFrame frame{wo, face_forward(found->shading_normal, wo), found->geometric_normal};
-    result += kept * direct_light(*found, frame, local_shading(material, *found), random, state);
+    result += kept * surface_light(*found, frame, local_shading(material, *found), weight * kept.max_component(),
+                                   random, state);
     if (!transmissive(material)) break;
     kept = kept * shadow_transmittance(material, frame);
     from = *found;

@@ -2,6 +2,7 @@
 /// Recursive ray tracing with the CS 488 Phong model, shadows and specular secondary rays.
 
 #include "mjray/accel/accelerator.h"
+#include "mjray/integrator/indirect_light.h"
 #include "mjray/integrator/integrator.h"
 #include "mjray/material/shading.h"
 #include "mjray/scene/world.h"
@@ -13,6 +14,9 @@ struct IntegratorSettings {
   int max_reflection_depth = 8;  ///< reflection, glossy and Fresnel reflection rays
   int max_refraction_depth = 8;  ///< transmission rays
   int area_light_samples = 1;    ///< -s: N×N jittered shadow rays per area light
+  /// Shadow rays pass through glass, keeping its transmittance; off when a caustic photon
+  /// map brings that light instead (glass then shadows like any object).
+  bool transmissive_shadows = true;
 };
 
 /// Whitted's recursion as CS 488 and the original project define it: local Phong shading
@@ -20,10 +24,12 @@ struct IntegratorSettings {
 /// lobes, to -r reflections and -f refractions deep; a lobe past its limit ends in one
 /// straight look along it (terminal_light) rather than black. Shadow rays pass through
 /// transmissive surfaces (shadow_transmittance.h). Asks materials and lights; names none.
+/// An IndirectLight, when given, adds its light at every surface shaded.
 class WhittedIntegrator final : public Integrator {
  public:
-  WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings)
-      : world_(world), accel_(accel), settings_(settings) {}
+  WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings,
+                    const IndirectLight* indirect = nullptr)
+      : world_(world), accel_(accel), settings_(settings), indirect_(indirect) {}
 
   Color radiance(const Ray& ray, RandomStream& random, TraceState& state) const override;
 
@@ -45,6 +51,10 @@ class WhittedIntegrator final : public Integrator {
   /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
   Color direct_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                      RandomStream& random, TraceState& state) const;
+  /// Direct light plus what the IndirectLight adds there; `weight` is the surface's share in
+  /// its pixel.
+  Color surface_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
+                      float weight, RandomStream& random, TraceState& state) const;
   /// The Phong reflection of one light sample, or black when it is behind the surface or
   /// in shadow (not looked for when `unoccluded` is known).
   Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
@@ -77,6 +87,7 @@ class WhittedIntegrator final : public Integrator {
   const World& world_;
   const Accelerator& accel_;
   IntegratorSettings settings_;
+  const IndirectLight* indirect_;
 };
 
 }  // namespace mjray

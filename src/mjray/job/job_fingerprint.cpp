@@ -75,6 +75,9 @@ std::string JobFingerprints::of(size_t index) const {
   line("--aa-threshold", number(o.render.antialias_threshold));
   line("anti-aliasing passes", std::to_string(o.render.antialias_max_passes));
   line("--seed", std::to_string(o.render.seed));
+  // Only when on, so that states saved before these options existed still resume.
+  if (o.photons.caustics()) line("--caustics", std::to_string(o.photons.caustic_photons));
+  if (o.photons.global_illumination()) line("--gi", std::to_string(o.photons.global_photons));
   line("tile size", std::to_string(o.render.tile_size));
   line("--gamma", o.outputs.encoding.gamma == OutputGamma::kSrgb ? "srgb" : "linear");  // decodes textures too
   line("--spp", std::to_string(o.render.samples_per_pixel));

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "mjray/accel/make_accelerator.h"
+#include "mjray/integrator/photon/photon_settings.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/io/encode_options.h"
 #include "mjray/render/image_render.h"
@@ -39,6 +40,7 @@ struct FrameRange {
 struct JobOptions {
   AcceleratorOptions accel;
   IntegratorSettings integrator;
+  PhotonSettings photons;  ///< --caustics, --gi
   RenderSettings render;  ///< with the --crop window (render.crop)
   OutputOptions outputs;
   ViewOptions view;

@@ -10,7 +10,9 @@
 
 #include "mjray/accel/accelerator.h"
 #include "mjray/camera/camera.h"
+#include "mjray/integrator/indirect_light.h"
 #include "mjray/integrator/integrator.h"
+#include "mjray/integrator/photon/photon_maps.h"
 #include "mjray/job/job_options.h"
 #include "mjray/job/job_view.h"
 #include "mjray/scene/scene_description.h"
@@ -38,6 +40,8 @@ class PreparedJob {
   const std::vector<std::string>& warnings() const { return warnings_; }
   /// Seconds spent flattening and building the accelerator.
   double build_seconds() const { return build_seconds_; }
+  /// The photon maps' statistics, or nothing without --caustics and --gi.
+  const PhotonStatistics* photon_statistics() const { return photons_ ? &photons_->statistics() : nullptr; }
 
  private:
   const RenderJob& job_;
@@ -48,6 +52,8 @@ class PreparedJob {
   World world_;
   std::unique_ptr<Accelerator> accel_;
   Camera camera_;
+  std::unique_ptr<PhotonMaps> photons_;
+  std::unique_ptr<IndirectLight> indirect_;
   std::unique_ptr<Integrator> integrator_;
   double build_seconds_ = 0;
 };

@@ -33,6 +33,9 @@ struct AreaLight {
   EmittedRay sample_le(Point2 u_position, Point2 u_direction) const {
     return {{point_at(u_position.u, u_position.v), sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
   }
+  /// The point at parameters u, uniform over the parallelogram, with the whole light's
+  /// intensity (the mean over the points is the light).
+  EmissionPoint emission_point(Point2 u) const { return {point_at(u.u, u.v), colour}; }
   /// The parallelogram its samples lie in, corners in order around it.
   std::array<Point3, 4> sample_region() const { return {corner, corner + edge1, corner + edge1 + edge2, corner + edge2}; }
   /// Total flux, 4π · colour (before falloff).

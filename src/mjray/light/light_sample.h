@@ -24,6 +24,13 @@ struct EmittedRay {
   Color flux;
 };
 
+/// A point light leaves a light from, and the radiant intensity of the whole light there, the
+/// same in every direction: photons drawn from it carry intensity × solid angle / count.
+struct EmissionPoint {
+  Point3 position;
+  Color intensity;
+};
+
 /// The falloff 1 / (c0 + c1·d + c2·d²) at distance d; 0 where the denominator is not positive.
 inline float falloff_attenuation(const float (&falloff)[3], float d) {
   const float denominator = falloff[0] + falloff[1] * d + falloff[2] * d * d;

@@ -28,6 +28,8 @@ struct PointLight {
   EmittedRay sample_le(Point2 /*u_position*/, Point2 u_direction) const {
     return {{position, sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
   }
+  /// The light's position and intensity (u is unused).
+  EmissionPoint emission_point(Point2 /*u*/) const { return {position, colour}; }
   /// Where its samples lie: the position (four times, for the parallelogram shape of lights).
   std::array<Point3, 4> sample_region() const { return {position, position, position, position}; }
   /// Total flux, 4π · colour (before falloff).

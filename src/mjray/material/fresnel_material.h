@@ -15,6 +15,7 @@ struct FresnelMaterial {
   float eta_inside = 1.5f;
 
   LocalShading local(const SurfaceInteraction& si) const { return base.local(si); }
+  LocalShading scattering(const SurfaceInteraction& si) const { return base.diffuse_scattering(si); }
   SpecularLobes specular_lobes(const ShadingFrame& f) const {
     return dielectric_lobes(f, eta_outside, eta_inside, fresnel_dielectric);
   }
@@ -22,6 +23,7 @@ struct FresnelMaterial {
     const float t = dielectric_transmittance(f, eta_outside, eta_inside, fresnel_dielectric);
     return {t, t, t};
   }
+  bool specular() const { return true; }
   bool transmissive() const { return true; }
 };
 

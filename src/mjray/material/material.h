@@ -4,8 +4,11 @@
 /// Each material is a struct in `<name>_material.h` with
 ///   - `LocalShading local(const SurfaceInteraction&)`: the CS 488 Phong terms at a hit (and,
 ///     through LocalShading::eval/sample, the physically based BRDF they map to);
+///   - `LocalShading scattering(const SurfaceInteraction&)`: the non-specular reflectance that
+///     transports beyond Whitted (photons, final gather) scatter by, energy-conserving;
 ///   - `SpecularLobes specular_lobes(const ShadingFrame&)`: the mirror, glossy and refracted
-///     directions light arrives along, with their weights;
+///     directions light arrives along, with their weights, and `bool specular()`: whether it
+///     ever has any (photons for caustics are aimed at such objects);
 ///   - `Color shadow_transmittance(const ShadingFrame&)`: what a shadow ray crossing the
 ///     surface keeps (black: opaque), and `bool transmissive()`: whether that is ever more
 ///     than black (the accelerators then let shadow rays continue past it).
@@ -29,8 +32,14 @@ using Material =
 inline LocalShading local_shading(const Material& m, const SurfaceInteraction& si) {
   return std::visit([&](const auto& material) { return material.local(si); }, m);
 }
+inline LocalShading scattering(const Material& m, const SurfaceInteraction& si) {
+  return std::visit([&](const auto& material) { return material.scattering(si); }, m);
+}
 inline SpecularLobes specular_lobes(const Material& m, const ShadingFrame& f) {
   return std::visit([&](const auto& material) { return material.specular_lobes(f); }, m);
+}
+inline bool specular(const Material& m) {
+  return std::visit([](const auto& material) { return material.specular(); }, m);
 }
 inline Color shadow_transmittance(const Material& m, const ShadingFrame& f) {
   return std::visit([&](const auto& material) { return material.shadow_transmittance(f); }, m);

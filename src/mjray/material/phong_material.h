@@ -28,7 +28,15 @@ struct PhongMaterial {
   }
 
   LocalShading local(const SurfaceInteraction& si) const { return {kd_at(si), ks, shininess}; }
+  /// Light beyond Whitted scatters by the whole Phong model: ks is a glossy lobe here.
+  LocalShading scattering(const SurfaceInteraction& si) const { return local(si).energy_conserving(); }
   SpecularLobes specular_lobes(const ShadingFrame&) const { return {}; }
+  bool specular() const { return false; }
+  /// The scattering of a material with specular lobes: kd alone. Its ks is the highlight of
+  /// the lights that those lobes would show, and the lobes reflect everything else.
+  LocalShading diffuse_scattering(const SurfaceInteraction& si) const {
+    return LocalShading{kd_at(si), {}, 1}.energy_conserving();
+  }
   Color shadow_transmittance(const ShadingFrame&) const { return {}; }
   bool transmissive() const { return false; }
 };

@@ -23,6 +23,7 @@ struct RefractiveMaterial {
   float eta_inside = 1.5f; ///< η_t: index of the object
 
   LocalShading local(const SurfaceInteraction& si) const { return base.local(si); }
+  LocalShading scattering(const SurfaceInteraction& si) const { return base.diffuse_scattering(si); }
   SpecularLobes specular_lobes(const ShadingFrame& f) const {
     return dielectric_lobes(f, eta_outside, eta_inside, ConstantReflectance{reflectivity});
   }
@@ -30,6 +31,7 @@ struct RefractiveMaterial {
     const float t = dielectric_transmittance(f, eta_outside, eta_inside, ConstantReflectance{reflectivity});
     return {t, t, t};
   }
+  bool specular() const { return true; }
   bool transmissive() const { return true; }
 };
 

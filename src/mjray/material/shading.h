@@ -61,13 +61,48 @@ struct LocalShading {
     return kd * kInvPi + ks * ((shininess + 2) * 0.5f * kInvPi * std::pow(cos_alpha, shininess));
   }
 
-  /// A direction drawn with density cos θ / π about n, with its BRDF value; nothing when
-  /// the draw lands on the horizon.
-  std::optional<BsdfSample> sample(const ShadingFrame& f, float u1, float u2) const {
-    const Vector3 wi = sample_cosine_hemisphere(Vector3(f.n), u1, u2);
+  /// The same terms scaled down together where a channel of kd + ks exceeds 1, so that the
+  /// surface reflects no more light than it receives.
+  LocalShading energy_conserving() const {
+    const float total = (kd + ks).max_component();
+    return total > 1 ? LocalShading{kd / total, ks / total, shininess} : *this;
+  }
+
+  /// The density of `sample`'s directions at wi (solid angle).
+  float pdf(const ShadingFrame& f, const Vector3& wi) const {
     const float cos_theta = dot(wi, f.n);
-    if (!(cos_theta > 0)) return std::nullopt;
-    return BsdfSample{wi, eval(f, wi), cos_theta * std::numbers::inv_pi_v<float>};
+    if (cos_theta <= 0) return 0;
+    constexpr float kInvPi = std::numbers::inv_pi_v<float>;
+    const float cos_alpha = std::max(0.f, dot(reflect(f.wo, f.n), wi));
+    const float glossy = (shininess + 1) * 0.5f * kInvPi * std::pow(cos_alpha, shininess);
+    const float p = diffuse_share();
+    return p * cos_theta * kInvPi + (1 - p) * glossy;
+  }
+
+  /// A direction drawn from the mixture of the two parts, chosen in proportion to their mean
+  /// albedo: cos θ / π about n, or (s + 1)/2π · cos^s α about the mirror of wo. Returns its
+  /// BRDF value and mixture density; nothing below the surface or when both parts are black.
+  std::optional<BsdfSample> sample(const ShadingFrame& f, float u1, float u2) const {
+    const float p = diffuse_share();
+    if (!(p >= 0)) return std::nullopt;
+    Vector3 wi;
+    if (u1 < p) {
+      wi = sample_cosine_hemisphere(Vector3(f.n), u1 / p, u2);
+    } else {
+      // Inverting the lobe's CDF gives cos α; a cone's rim (u1 = 1) is the direction at α.
+      const float cos_alpha = std::pow(std::min((u1 - p) / (1 - p), 1.f), 1 / (shininess + 1));
+      wi = sample_cone(reflect(f.wo, f.n), cos_alpha, 1, u2);
+    }
+    const float density = pdf(f, wi);
+    if (!(density > 0)) return std::nullopt;
+    return BsdfSample{wi, eval(f, wi), density};
+  }
+
+ private:
+  /// The chance `sample` draws from the diffuse part; NaN when both parts are black.
+  float diffuse_share() const {
+    const float d = kd.r + kd.g + kd.b, s = ks.r + ks.g + ks.b;
+    return d / (d + s);
   }
 };
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <thread>
 
-#include "mjray/render/parallel_for.h"
+#include "mjray/core/parallel_for.h"
 
 namespace mjray {
 

@@ -1,0 +1,24 @@
+#pragma once
+/// Light that reaches a surface other than straight from a light or along its specular lobes:
+/// caustics and interreflection, which Whitted's recursion leaves out.
+
+#include "mjray/core/color.h"
+#include "mjray/core/rng.h"
+#include "mjray/geometry/surface_interaction.h"
+#include "mjray/integrator/integrator.h"
+#include "mjray/material/shading.h"
+
+namespace mjray {
+
+/// What WhittedIntegrator adds at every surface it shades, when a job asks for it (photon
+/// maps). Immutable after construction and safe to call from many threads at once.
+class IndirectLight {
+ public:
+  virtual ~IndirectLight() = default;
+  /// The light leaving `si` toward frame.wo; `local` is the material's local shading there
+  /// and `weight` the share this surface has in its pixel (fewer samples where it is small).
+  virtual Color radiance(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
+                         float weight, RandomStream& random, RayCounters& counters) const = 0;
+};
+
+}  // namespace mjray

@@ -1,0 +1,40 @@
+#pragma once
+/// The photon maps of one job: built once before the render, read by every pixel.
+
+#include <cstdint>
+
+#include "mjray/accel/accelerator.h"
+#include "mjray/integrator/photon/density_estimate.h"
+#include "mjray/integrator/photon/kd_tree.h"
+#include "mjray/integrator/photon/photon.h"
+#include "mjray/integrator/photon/photon_settings.h"
+#include "mjray/integrator/photon/photon_statistics.h"
+#include "mjray/scene/world.h"
+
+namespace mjray {
+
+/// The caustic map (--caustics), the global map (--gi) and the irradiance precomputed at
+/// every irradiance_stride-th global photon (Christensen's final-gather acceleration), each
+/// in a kd-tree. Identical for any number of threads.
+class PhotonMaps {
+ public:
+  PhotonMaps(const World& world, const Accelerator& accel, const PhotonSettings& settings, uint64_t seed, int threads);
+
+  const KdTree<Photon>& caustic() const { return caustic_; }
+  const KdTree<Photon>& global() const { return global_; }
+  const KdTree<IrradianceSample>& irradiance() const { return irradiance_; }
+  /// How the caustic map and the global map are read.
+  const DensityQuery& caustic_query() const { return caustic_query_; }
+  const DensityQuery& global_query() const { return global_query_; }
+  const PhotonStatistics& statistics() const { return statistics_; }
+
+ private:
+  void precompute_irradiance(int stride, int threads);
+
+  KdTree<Photon> caustic_, global_;
+  KdTree<IrradianceSample> irradiance_;
+  DensityQuery caustic_query_, global_query_;
+  PhotonStatistics statistics_;
+};
+
+}  // namespace mjray
