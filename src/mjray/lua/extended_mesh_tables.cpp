@@ -50,7 +50,6 @@ std::vector<std::array<float, kSize>> read_tuples(lua_State* L, int table, const
   std::vector<std::array<float, kSize>> out;
   if (lua_type(L, table) != LUA_TTABLE) return out;
   const auto count = lua_Integer(lua_rawlen(L, table));
-  out.reserve(size_t(count));
   for (lua_Integer i = 1; i <= count; ++i) {
     lua_rawgeti(L, table, i);
     if (lua_type(L, -1) != LUA_TTABLE || lua_rawlen(L, -1) < kSize)
