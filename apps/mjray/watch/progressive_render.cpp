@@ -25,8 +25,9 @@ constexpr auto kPollInterval = std::chrono::milliseconds(20);
 /// and calls `publish()` every kPublishInterval.
 class PassMonitor {
  public:
-  PassMonitor(ImageRender& render, const std::function<bool()>& stop_wanted, std::function<void()> publish)
-      : thread_([this, &render, &stop_wanted, publish = std::move(publish)] {
+  // Both functions are kept by value: a caller's lambda arrives as a temporary std::function.
+  PassMonitor(ImageRender& render, std::function<bool()> stop_wanted, std::function<void()> publish)
+      : thread_([this, &render, stop_wanted = std::move(stop_wanted), publish = std::move(publish)] {
           auto last_publish = Clock::now();
           while (!done_) {
             std::this_thread::sleep_for(kPollInterval);
