@@ -10,26 +10,9 @@ mirror ball shows where each part of the sky went.
 usage: make_environment.py OUT.png [width]
 """
 import math
-import struct
 import sys
-import zlib
 
-
-def png_chunk(kind, data):
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-
-def write_png(path, width, height, pixel):
-    """pixel(x, y) -> (r, g, b) floats in [0, 1], y = 0 the top row."""
-    raw = bytearray()
-    for y in range(height):
-        raw.append(0)  # filter type None
-        for x in range(width):
-            raw.extend(max(0, min(255, int(c * 255 + 0.5))) for c in pixel(x, y))
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", header) +
-                png_chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + png_chunk(b"IEND", b""))
+from rgb_png import write_png, to_bytes
 
 
 def direction(x, y, width, height):
@@ -70,7 +53,7 @@ def main():
         base = (0.55, 0.5, 0.38) if check else (0.35, 0.42, 0.28)
         return mix(base, (0.6, 0.66, 0.7), min(1, max(0, (t - 6) / 40)))
 
-    write_png(out, width, height, pixel)
+    write_png(out, width, height, lambda x, y: to_bytes(pixel(x, y)))
 
 
 if __name__ == "__main__":

@@ -8,26 +8,9 @@ arrow pointing up (+v) and a white square in the bottom-left corner, where (u, v
 
 usage: make_texture.py OUT.png [size]
 """
-import struct
 import sys
-import zlib
 
-
-def png_chunk(kind, data):
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-
-def write_png(path, width, height, pixel):
-    """pixel(x, y) -> (r, g, b) bytes, y = 0 the top row as PNG stores rows."""
-    raw = bytearray()
-    for y in range(height):
-        raw.append(0)  # filter type None
-        for x in range(width):
-            raw.extend(pixel(x, y))
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)  # 8-bit RGB
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", header) +
-                png_chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + png_chunk(b"IEND", b""))
+from rgb_png import write_png
 
 
 def main():
