@@ -7,26 +7,9 @@ usage: make_painting.py [OUT.png] [width height]   (default scenes/textures/pain
 """
 import math
 import os
-import struct
 import sys
-import zlib
 
-
-def png_chunk(kind, data):
-    return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-
-def write_png(path, width, height, rows):
-    raw = bytearray()
-    for row in rows:
-        raw.append(0)
-        raw.extend(row)
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
-    # An sRGB chunk: the values are sRGB-encoded, as a painting photographed would be.
-    srgb = png_chunk(b"sRGB", bytes([0]))
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", header) + srgb +
-                png_chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + png_chunk(b"IEND", b""))
+from rgb_png import write_png_rows
 
 
 def lattice(ix, iy, seed):
@@ -146,7 +129,8 @@ def main():
             colour = brush(u, v, trees(u, v, landscape(u, v)))
             row.extend(int(clamp01(c) * 255 + 0.5) for c in colour)
         rows.append(row)
-    write_png(out, width, height, rows)
+    # An sRGB chunk: the values are sRGB-encoded, as a painting photographed would be.
+    write_png_rows(out, width, height, rows, srgb=True)
     print("wrote", out)
 
 
