@@ -124,8 +124,11 @@ int main(int argc, char** argv) {
       for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
     for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
-    const RunSetup setup{scene, options, fingerprints, {cl.quiet, cl.print_stats, cl.resume}, cl.stats_json,
-                         distribution, ranks};
+    LocalRunOptions run;
+    run.quiet = cl.quiet;
+    run.print_stats = cl.print_stats;
+    run.resume = cl.resume;
+    const RunSetup setup{scene, options, fingerprints, run, cl.stats_json, distribution, ranks};
     run_coordinator(world, setup);
   } catch (const Interrupted&) {
     end_run(world);

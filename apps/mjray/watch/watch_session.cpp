@@ -69,7 +69,9 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
     // Compute each frame as the local driver does, with the coarse pass and the page added.
     const JobFingerprints fingerprints(scene, options);
     std::vector<JobStatistics> statistics;
-    LocalRunOptions run{cl.quiet, cl.print_stats, false};
+    LocalRunOptions run;
+    run.quiet = cl.quiet;
+    run.print_stats = cl.print_stats;
     run.snapshot_interval_seconds = 0;  // the page shows the progress; the file gets the result
     for (size_t i = 0; i < scene.jobs.size(); ++i) {
       run.run_render = ProgressiveRender(page, i, options.render, [&files] { return files.changed(); });

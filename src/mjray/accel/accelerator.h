@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string_view>
 
 #include "mjray/core/bounds.h"
@@ -40,11 +41,14 @@ class Accelerator {
   /// or one whose hit it says blocks. Without a blocker, every primitive the filter sees that
   /// the ray crosses has been shown to it.
   virtual bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const = 0;
-  /// Whether no primitive but `ignore` can touch `region` (so every shadow ray inside it
-  /// reaches its light). May say false when unsure: that only costs the rays being traced.
-  virtual bool region_clear(const LightPyramid& region, uint32_t ignore) const {
-    (void)region, (void)ignore;
-    return false;
+  /// The primitives other than `ignore` that may touch `region`, written to the front of
+  /// `out`: every shadow ray inside the region can hit only these (and `ignore`). None found
+  /// means every such ray reaches its light. Nothing when there are more than out.size(), or
+  /// when the search would cost more than it saves: the rays are then traced as usual.
+  virtual std::optional<size_t> region_primitives(const LightPyramid& region, uint32_t ignore,
+                                                  std::span<uint32_t> out) const {
+    (void)region, (void)ignore, (void)out;
+    return std::nullopt;
   }
   /// Bounds of all primitives.
   virtual Bounds3 bounds() const = 0;

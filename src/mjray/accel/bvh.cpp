@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -90,6 +92,10 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
   // into leaf order.
   std::vector<Bounds3> prim_bounds(prims.size());
   for (uint32_t prim = 0; prim < prim_bounds.size(); ++prim) prim_bounds[prim] = prims.primitive_bounds(prim);
+  if (prim_bounds.size() > BvhWideNode::kMaxLeafPrimitives)
+    throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
+                            " primitives; use --accel embree for this scene");
+  static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
   const BvhBuildResult built = build_bvh(prim_bounds, {.threads = threads});
   nodes_ = collapse_to_wide(built.nodes);
   leaf_prims_.resize(built.order.size());
@@ -140,37 +146,40 @@ bool Bvh::occluded(const Ray& ray, float t_max) const {
   return trace<BvhQuery::kAny>(ray, {0, t_max}, nullptr, nullptr);
 }
 
-bool Bvh::region_clear(const LightPyramid& region, uint32_t ignore) const {
-  if (nodes_.empty()) return true;
-  // Past this many nodes the proof is not worth its cost: the rays are traced instead.
+std::optional<size_t> Bvh::region_primitives(const LightPyramid& region, uint32_t ignore,
+                                             std::span<uint32_t> out) const {
+  if (nodes_.empty()) return 0;
+  // Past this many nodes the search is not worth its cost: the rays are traced instead.
   constexpr int kNodeBudget = 48;
   uint32_t stack[kStackSize];
   int top = 0, visited = 0;
+  size_t found = 0;
   stack[top++] = 0;
   while (top > 0) {
-    if (++visited > kNodeBudget) return false;
+    if (++visited > kNodeBudget) return std::nullopt;
     const BvhWideNode& node = nodes_[stack[--top]];
-    for (size_t i = 0; i < kBvhWidth; ++i) {
-      const Bounds3 box{{node.bounds[0][i], node.bounds[1][i], node.bounds[2][i]},
-                        {node.bounds[3][i], node.bounds[4][i], node.bounds[5][i]}};
-      if (box.empty() || region.outside(box)) continue;
-      if (node.count[i] == 0) {
+    // Unused slots have empty boxes, which are outside.
+    for (unsigned touching = ~region.outside(node.bounds) & 0xffu; touching != 0; touching &= touching - 1) {
+      const size_t i = size_t(std::countr_zero(touching));
+      if (!node.is_leaf(i)) {
         stack[top++] = node.child[i];
         continue;
       }
-      // A leaf: each primitive must be surely outside.
-      for (uint32_t k = node.child[i], end = node.child[i] + node.count[i]; k < end; ++k) {
+      // A leaf: each primitive not surely outside is a candidate.
+      for (uint32_t k = node.first(i), end = k + node.count(i); k < end; ++k) {
         const LeafPrimitive& leaf = leaf_prims_[k];
         if (leaf.prim == ignore) continue;
         const bool outside = leaf.prim < triangle_count_
                                  ? region.outside(std::bit_cast<Point3>(leaf.p0), std::bit_cast<Point3>(leaf.p1),
                                                   std::bit_cast<Point3>(leaf.p2))
                                  : region.outside(prims_.primitive_bounds(leaf.prim));
-        if (!outside) return false;
+        if (outside) continue;
+        if (found == out.size()) return std::nullopt;
+        out[found++] = leaf.prim;
       }
     }
   }
-  return true;
+  return found;
 }
 
 bool Bvh::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {

@@ -17,13 +17,29 @@ constexpr int kBvhWidth = 8;
 
 /// A node with up to kBvhWidth children, bounds stored axis by axis (structure of arrays) so
 /// that SIMD slab tests cover several children at once. A child is an inner node or a leaf:
-/// a run of LeafPrimitives. Unused slots have empty bounds, which every ray misses.
-struct alignas(64) BvhWideNode {
+/// a run of LeafPrimitives. Unused slots have empty bounds, which every ray misses. 224 bytes:
+/// a leaf's run is packed into its child word, so a node is its boxes and eight words.
+struct alignas(32) BvhWideNode {
+  /// Leaf words have the top bit set (so one SIMD movemask finds a node's leaves), then the
+  /// first LeafPrimitive, then the count in the low bits.
+  static constexpr uint32_t kLeafFlag = 0x80000000u;
+  static constexpr int kCountBits = 3;
+  /// The most LeafPrimitives a BVH can index.
+  static constexpr uint32_t kMaxLeafPrimitives = kLeafFlag >> kCountBits;
+
   /// bounds[k][i]: k = 0..2 lower x, y, z; k = 3..5 upper x, y, z of child i (world space).
   std::array<std::array<float, kBvhWidth>, 6> bounds;
-  std::array<uint32_t, kBvhWidth> child;  ///< inner: child node index; leaf: first LeafPrimitive
-  std::array<uint8_t, kBvhWidth> count;   ///< leaf: number of primitives (≥ 1); inner or unused: 0
+  /// Child i: an inner node's index, or a leaf (leaf_word); 0 in unused slots.
+  std::array<uint32_t, kBvhWidth> child;
+
+  /// The word of a leaf of `count` (1..7) LeafPrimitives from `first`.
+  static constexpr uint32_t leaf_word(uint32_t first, uint32_t count) { return kLeafFlag | first << kCountBits | count; }
+  bool is_leaf(size_t i) const { return (child[i] & kLeafFlag) != 0; }
+  /// A leaf's first LeafPrimitive and count.
+  uint32_t first(size_t i) const { return (child[i] & ~kLeafFlag) >> kCountBits; }
+  uint32_t count(size_t i) const { return child[i] & ((1u << kCountBits) - 1); }
 };
+static_assert(sizeof(BvhWideNode) == 224);
 
 /// A primitive as a leaf stores it: a triangle's world-space corners copied in leaf order
 /// (so leaf tests read contiguous memory), or just the id of a shape.
@@ -56,7 +72,8 @@ class Bvh final : public Accelerator {
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
   bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const override;
-  bool region_clear(const LightPyramid& region, uint32_t ignore) const override;
+  std::optional<size_t> region_primitives(const LightPyramid& region, uint32_t ignore,
+                                          std::span<uint32_t> out) const override;
   Bounds3 bounds() const override { return bounds_; }
   std::string_view name() const override { return "bvh"; }
   size_t memory_bytes() const override;

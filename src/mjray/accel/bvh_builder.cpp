@@ -390,10 +390,7 @@ class Collapser {
         node.bounds[k][i] = kid.lo[k];
         node.bounds[k + 3][i] = kid.hi[k];
       }
-      if (is_leaf(kids[i])) {
-        node.child[i] = kid.offset;
-        node.count[i] = uint8_t(kid.count);
-      }
+      if (is_leaf(kids[i])) node.child[i] = BvhWideNode::leaf_word(kid.offset, kid.count);
     }
     out.push_back(node);
     for (size_t i = 0; i < size_t(n); ++i)

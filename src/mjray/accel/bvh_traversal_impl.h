@@ -105,7 +105,9 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
       unsigned mask = hit_children(node, box_ray, t_min, t_max, t_enter);
       if (mask != 0) {
         const auto entry = [&](int i) {
-          return StackEntry{node.child[size_t(i)], node.count[size_t(i)], t_enter[size_t(i)]};
+          const size_t k = size_t(i);
+          return node.is_leaf(k) ? StackEntry{node.first(k), node.count(k), t_enter[k]}
+                                 : StackEntry{node.child[k], 0, t_enter[k]};
         };
         current = entry(std::countr_zero(mask));
         mask &= mask - 1;
@@ -156,11 +158,20 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
   }
 }
 
-/// The leaf children of a node, one bit per slot whose count is not zero.
+/// The leaf children of a node: the top bits of its child words.
 inline unsigned leaf_children(const BvhWideNode& node) {
+#if MJRAY_BVH_AVX
+  return unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child.data())))));
+#elif defined(__SSE2__)
+  const auto half = [&](size_t at) {
+    return unsigned(_mm_movemask_ps(_mm_castsi128_ps(_mm_load_si128(reinterpret_cast<const __m128i*>(&node.child[at])))));
+  };
+  return half(0) | half(4) << 4;
+#else
   unsigned mask = 0;
-  for (size_t i = 0; i < kBvhWidth; ++i) mask |= unsigned(node.count[i] != 0) << i;
+  for (size_t i = 0; i < kBvhWidth; ++i) mask |= unsigned(node.is_leaf(i)) << i;
   return mask;
+#endif
 }
 
 /// Any blocking hit for t in `t_range` (an opaque primitive, or a transmissive one `filter`
@@ -183,7 +194,7 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     // Compute the leaves' primitives first.
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
-      for (uint32_t k = node.child[i], end = node.child[i] + node.count[i]; k < end; ++k) {
+      for (uint32_t k = node.first(i), end = k + node.count(i); k < end; ++k) {
         const LeafPrimitive& leaf = bvh.leaves[k];
         if (leaf.prim < bvh.triangle_count) {
           const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);

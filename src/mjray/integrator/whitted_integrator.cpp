@@ -47,67 +47,53 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
+    uint32_t* cached = state.occluders.slot(index);
     if (n == 1) {
-      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state);
+      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state,
+                             ShadowScope(accel_));
       continue;
     }
-    // When nothing can stand between this point and the light, no sample needs a ray.
-    const bool clear = light_region_clear(si, light);
+    // Found once for all n×n samples: what their shadow rays can hit, if anything.
+    const ShadowScope scope(world_.primitives, accel_, si, light, cached ? *cached : OccluderCache::kNone);
     Color sum;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const float jitter_s = random.uniform();
         const float jitter_t = random.uniform();
         const Point2 u{(float(i) + jitter_s) / float(n), (float(j) + jitter_t) / float(n)};
-        sum += light_sample(si, frame, local, sample_li(light, si.point, u), index, state, clear);
+        sum += light_sample(si, frame, local, sample_li(light, si.point, u), index, state, scope);
       }
     result += sum / float(n * n);
   }
   return result;
 }
 
-bool WhittedIntegrator::light_region_clear(const SurfaceInteraction& si, const Light& light) const {
-  // The rays of every sample must leave from one origin: the light wholly on one side of the
-  // surface, by a clear angle. On the outer side (where the geometric normal points) the
-  // surface itself cannot stand in the way, for a triangle or a convex shape; on the inner
-  // side it is tested like everything else.
-  const std::array<Point3, 4> region = sample_region(light);
-  int in_front = 0;
-  for (const Point3& corner : region) {
-    const Vector3 to = corner - si.point;
-    const float cosine = dot(si.geometric_normal, to) / length(to);
-    if (!(std::abs(cosine) > 1e-3f)) return false;
-    in_front += cosine > 0;
-  }
-  if (in_front != 0 && in_front != 4) return false;
-  const auto pyramid = LightPyramid::make(offset_origin(si, region[0] - si.point), region);
-  constexpr uint32_t kNone = ~uint32_t(0);
-  return pyramid && accel_.region_clear(*pyramid, in_front == 4 ? si.prim : kNone);
-}
-
 Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const ShadingFrame& frame,
                                       const LocalShading& local, const LightSample& sample,
-                                      size_t light_index, TraceState& state, bool unoccluded) const {
+                                      size_t light_index, TraceState& state, const ShadowScope& scope) const {
   const Vector3 to_light = sample.position - si.point;
   const float distance = length(to_light);
   if (!(distance > 0)) return {};
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
-  if (unoccluded) return local.phong(frame, l, n_dot_l) * sample.intensity;
+  if (scope.clear()) return local.phong(frame, l, n_dot_l) * sample.intensity;
   ++state.rays.shadow;
   const Ray shadow = spawn_ray_to(si, sample.position);
-  // The primitive that blocked the last shadow ray toward this light mostly blocks this one.
+  // The primitive that blocked the last shadow ray toward this light mostly blocks this one
+  // (a scope's list already holds it first).
   uint32_t* cached = state.occluders.slot(light_index);
-  if (cached && *cached != OccluderCache::kNone && world_.primitives.intersect(*cached, shadow, {0, kShadowTMax}))
+  if (cached && *cached != OccluderCache::kNone && scope.whole_scene() &&
+      world_.primitives.intersect(*cached, shadow, {0, kShadowTMax}))
     return {};
+  const Accelerator& occluders = scope.occluders();
   // With a caustic photon map glass shadows like any object: the map brings its light.
   if (!settings_.transmissive_shadows && world_.primitives.any_transmissive()) {
-    if (accel_.occluded(shadow, kShadowTMax)) return {};
+    if (occluders.occluded(shadow, kShadowTMax)) return {};
     return local.phong(frame, l, n_dot_l) * sample.intensity;
   }
   // Through glass: what the transmissive surfaces on the way let pass.
-  const ShadowResult through = shadow_ray_transmittance(world_, accel_, shadow, kShadowTMax);
+  const ShadowResult through = shadow_ray_transmittance(world_, occluders, shadow, kShadowTMax);
   if (through.blocker && cached) *cached = *through.blocker;
   if (through.kept.is_black()) return {};
   if (!world_.primitives.any_transmissive()) return local.phong(frame, l, n_dot_l) * sample.intensity;

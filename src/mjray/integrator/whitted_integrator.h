@@ -4,6 +4,7 @@
 #include "mjray/accel/accelerator.h"
 #include "mjray/integrator/indirect_light.h"
 #include "mjray/integrator/integrator.h"
+#include "mjray/integrator/shadow_scope.h"
 #include "mjray/material/shading.h"
 #include "mjray/scene/world.h"
 
@@ -56,13 +57,10 @@ class WhittedIntegrator final : public Integrator {
   Color surface_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                       float weight, RandomStream& random, TraceState& state) const;
   /// The Phong reflection of one light sample, or black when it is behind the surface or
-  /// in shadow (not looked for when `unoccluded` is known).
+  /// in shadow; its shadow ray can hit only what `scope` holds.
   Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                      const LightSample& sample, size_t light_index, TraceState& state,
-                     bool unoccluded = false) const;
-  /// Whether every shadow ray from si to the light's sample region surely reaches it (a proof
-  /// by the accelerator; false when it cannot tell). The image is the same either way.
-  bool light_region_clear(const SurfaceInteraction& si, const Light& light) const;
+                     const ShadowScope& scope) const;
   /// Light arriving along the material's specular lobes, within the depth limits.
   Color specular_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobes& lobes,
                        Depth depth, RandomStream& random, TraceState& state) const;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <algorithm>
 #include <initializer_list>
 #include <limits>
 #include <random>
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/accel/brute_force.h"
+#include "mjray/accel/primitive_list.h"
 #include "mjray/geometry/light_pyramid.h"
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/geometry/primitive_set.h"
@@ -405,7 +407,7 @@ TEST(BvhRegion, AClearRegionHasNoBlockedRayAndClearRegionsAreFound) {
     const Point3 corner = lerp(b, unit(rng) * 1.6f - 0.3f, 1.2f + unit(rng), unit(rng) * 1.6f - 0.3f);
     const Vector3 e1(unit(rng) * 2, 0, unit(rng) * 0.5f), e2(unit(rng) * 0.5f, unit(rng) * 0.3f, unit(rng) * 2);
     const auto pyramid = LightPyramid::make(apex, {corner, corner + e1, corner + e1 + e2, corner + e2});
-    if (!pyramid || !bvh.region_clear(*pyramid, ~0u)) continue;
+    if (!pyramid || bvh.region_primitives(*pyramid, ~0u, {}) != size_t(0)) continue;
     ++clear;
     for (int s = 0; s < 16; ++s) {
       const Point3 target = corner + e1 * unit(rng) + e2 * unit(rng);
@@ -414,6 +416,107 @@ TEST(BvhRegion, AClearRegionHasNoBlockedRayAndClearRegionsAreFound) {
     }
   }
   EXPECT_GT(clear, 100);  // the proof does find clear regions
+}
+
+}  // namespace
+}  // namespace mjray
+
+namespace mjray {
+namespace {
+
+/// Records every hit it is shown and blocks none: with `sees_opaque`, every hit of the ray.
+class RecordingFilter final : public HitFilter {
+ public:
+  explicit RecordingFilter(bool sees_opaque = false) : HitFilter(sees_opaque) {}
+  bool blocks(const Hit& hit) override {
+    hits.push_back(hit);
+    return false;
+  }
+  /// The hits in a fixed order, each once; only transmissive ones unless `all`.
+  std::vector<std::pair<uint32_t, float>> sorted(const PrimitiveSet& prims, bool all) const {
+    std::vector<std::pair<uint32_t, float>> out;
+    for (const Hit& h : hits)
+      if (all || prims.transmissive(h.prim)) out.emplace_back(h.prim, h.t);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+  std::vector<Hit> hits;
+};
+
+// The shadow rays of one light region, tested against the BVH's list of the region's
+// primitives, answer as brute force over every primitive does: closest hit, any hit, and the
+// transmissive crossings a filter sees. Over 100k rays per mesh, through lists of up to 24.
+// Brute force runs once per ray, showing every hit to a filter; each answer is read from it.
+void expect_region_lists_agree(PrimitiveSet prims, uint32_t seed) {
+  add_shapes(prims, 30, seed);
+  prims.transmissive_flags.assign(prims.size(), 0);
+  for (uint32_t p = 0; p < prims.size(); p += 3) prims.transmissive_flags[p] = 1;
+  const Bvh bvh(prims, 0);
+  const BruteForce oracle(prims);
+  const Bounds3 b = prims.bounds();
+  const float size = length(b.diagonal());
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0, 1), signed_unit(-1, 1);
+  int lists = 0, rays = 0, blocked = 0, crossed = 0;
+  while (rays < 100000) {
+    const Point3 apex = lerp(b, unit(rng), unit(rng), unit(rng));
+    const Vector3 toward = normalize(Vector3(signed_unit(rng), signed_unit(rng), signed_unit(rng)));
+    const Point3 corner = apex + toward * size * (0.05f + 0.5f * unit(rng));
+    const float light = size * (0.01f + 0.1f * unit(rng));
+    const Vector3 e1 = normalize(cross(toward, Vector3(0.3f, 1, 0.2f))) * light;
+    const Vector3 e2 = normalize(cross(toward, e1)) * light;
+    const auto pyramid = LightPyramid::make(apex, {corner, corner + e1, corner + e1 + e2, corner + e2});
+    if (!pyramid) continue;
+    std::array<uint32_t, 24> buffer;
+    const auto found = bvh.region_primitives(*pyramid, ~0u, buffer);
+    if (!found || *found == 0) continue;
+    ++lists;
+    const PrimitiveList list(prims, std::span<const uint32_t>(buffer.data(), *found));
+    for (int s = 0; s < 16; ++s, ++rays) {
+      const Ray ray{apex, corner + e1 * unit(rng) + e2 * unit(rng) - apex};
+      const float t_max = 1 - 1e-4f;
+      RecordingFilter every_hit(true);
+      ASSERT_FALSE(oracle.occluded(ray, {0, t_max}, every_hit));
+      const auto& all = every_hit.hits;
+      const auto nearest = std::min_element(all.begin(), all.end(), [](const Hit& x, const Hit& y) {
+        return x.t < y.t || (x.t == y.t && x.prim < y.prim);
+      });
+      const auto got = list.intersect(ray, {0, t_max});
+      ASSERT_EQ(got.has_value(), !all.empty()) << "list " << lists << " ray " << s;
+      if (got) {
+        ASSERT_EQ(got->prim, nearest->prim);
+        ASSERT_EQ(got->t, nearest->t);
+        ASSERT_EQ(got->u, nearest->u);
+        ASSERT_EQ(got->v, nearest->v);
+      }
+      ASSERT_EQ(list.occluded(ray, t_max), !all.empty());
+      const bool opaque = std::any_of(all.begin(), all.end(), [&](const Hit& h) { return !prims.transmissive(h.prim); });
+      RecordingFilter crossings;
+      ASSERT_EQ(list.occluded(ray, {0, t_max}, crossings), opaque);
+      RecordingFilter every_hit_of_list(true);
+      ASSERT_FALSE(list.occluded(ray, {0, t_max}, every_hit_of_list));
+      ASSERT_EQ(every_hit_of_list.sorted(prims, true), every_hit.sorted(prims, true));
+      if (!opaque) {
+        ASSERT_EQ(crossings.sorted(prims, false), every_hit.sorted(prims, false));
+      }
+      blocked += opaque;
+      crossed += !opaque && !all.empty();
+    }
+  }
+  // Both kinds of answer were exercised.
+  EXPECT_GT(blocked, 1000);
+  EXPECT_GT(crossed, 1000);
+}
+
+TEST(BvhRegion, ListsOfARegionsPrimitivesAnswerItsRaysAsBruteForceOnTheTeapot) {
+  MJRAY_REQUIRE_SHARED(shared);
+  expect_region_lists_agree(obj_world(shared / "models/small/teapot_low_npm.obj"), 11);
+}
+
+TEST(BvhRegion, ListsOfARegionsPrimitivesAnswerItsRaysAsBruteForceInTheCornellBox) {
+  MJRAY_REQUIRE_SHARED(shared);
+  expect_region_lists_agree(obj_world(shared / "models/small/cornell/CornellBox-Original.obj"), 12);
 }
 
 }  // namespace

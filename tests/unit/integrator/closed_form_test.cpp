@@ -136,7 +136,7 @@ TEST(ClosedForm, ImageIsIdenticalForAnyThreadCountAndTileSize) {
   job.ambient = {0.1f, 0.1f, 0.1f};
   job.lights = {PointLight{{3, 8, 2}, {1, 1, 1}, {1, 0, 0}}};
   const Image reference = test::render(job);
-  for (const auto [threads, tile] : {std::pair{2, 16}, std::pair{3, 5}, std::pair{4, 1}}) {
+  for (const auto& [threads, tile] : {std::pair{2, 16}, std::pair{3, 5}, std::pair{4, 1}}) {
     JobOptions options = test::oracle_options();
     options.render.threads = threads;
     options.render.tile_size = tile;
