@@ -1,11 +1,13 @@
 #include "mjray/accel/bvh.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -22,6 +24,7 @@
 
 #include "mjray/accel/bvh_builder.h"
 #include "mjray/core/float_steps.h"
+#include "mjray/core/parallel_for.h"
 #include "mjray/geometry/triangle.h"
 
 namespace mjray {
@@ -89,17 +92,24 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
       triangle_count_(uint32_t(prims.triangles.size())),
       use_avx_(simd == BvhSimd::kBest && cpu_has_avx()) {
   // Compute primitive bounds, build the binary tree, widen it, then copy the triangles
-  // into leaf order.
-  std::vector<Bounds3> prim_bounds(prims.size());
-  for (uint32_t prim = 0; prim < prim_bounds.size(); ++prim) prim_bounds[prim] = prims.primitive_bounds(prim);
-  if (prim_bounds.size() > BvhWideNode::kMaxLeafPrimitives)
+  // into leaf order; the per-primitive loops in chunks on all the build's threads.
+  const int workers = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const auto in_chunks = [workers](size_t count, const auto& body) {
+    constexpr int kChunks = 64;
+    parallel_for(kChunks, workers, [&](int chunk, int) {
+      for (size_t i = count * size_t(chunk) / kChunks, end = count * size_t(chunk + 1) / kChunks; i < end; ++i) body(i);
+    });
+  };
+  if (prims.size() > BvhWideNode::kMaxLeafPrimitives)
     throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
                             " primitives; use --accel embree for this scene");
   static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
+  std::vector<Bounds3> prim_bounds(prims.size());
+  in_chunks(prim_bounds.size(), [&](size_t prim) { prim_bounds[prim] = prims.primitive_bounds(uint32_t(prim)); });
   const BvhBuildResult built = build_bvh(prim_bounds, {.threads = threads});
   nodes_ = collapse_to_wide(built.nodes);
   leaf_prims_.resize(built.order.size());
-  for (size_t i = 0; i < built.order.size(); ++i) {
+  in_chunks(built.order.size(), [&](size_t i) {
     LeafPrimitive& leaf = leaf_prims_[i];
     leaf.prim = built.order[i];
     if (prims.is_triangle(leaf.prim)) {
@@ -110,7 +120,7 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
     } else {
       leaf.p0 = leaf.p1 = leaf.p2 = {0, 0, 0};
     }
-  }
+  });
   if (!built.nodes.empty()) {
     const BvhNode& root = built.nodes.front();
     bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};

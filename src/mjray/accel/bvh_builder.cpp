@@ -54,7 +54,27 @@ struct alignas(16) Box4 {
 struct BuildRef : Box4 {
   uint32_t prim() const { return std::bit_cast<uint32_t>(lo[3]); }
   float centroid(int axis) const { return lo[axis] + hi[axis]; }
+#if defined(__SSE2__)
+  /// The doubled centroid in lanes 0..2, 0 in lane 3. The id is cleared first: as a float it
+  /// is mostly a denormal, whose arithmetic is slow.
+  __m128 centroids() const {
+    const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+    return _mm_add_ps(_mm_and_ps(_mm_load_ps(lo), xyz), _mm_load_ps(hi));
+  }
+#endif
 };
+
+/// Grows `box` (whose fourth lanes are 0) by the centroid of `r`.
+inline void grow_by_centroid(Box4& box, const BuildRef& r) {
+#if defined(__SSE2__)
+  const __m128 c = r.centroids();
+  _mm_store_ps(box.lo, _mm_min_ps(_mm_load_ps(box.lo), c));
+  _mm_store_ps(box.hi, _mm_max_ps(_mm_load_ps(box.hi), c));
+#else
+  const float c[4] = {r.centroid(0), r.centroid(1), r.centroid(2), 0};
+  box.grow_point(c);
+#endif
+}
 
 /// A subtree's box and the box of its primitives' (doubled) centroids.
 struct Extent {
@@ -88,7 +108,7 @@ bool is_finite(const Bounds3& b) { return is_finite(b.lo) && is_finite(b.hi) && 
 /// partitioning. Small nodes use fewer bins (one per primitive, at least 4): no fewer
 /// candidate splits that matter, and less fixed work per node.
 struct Binner {
-  float lo[3], scale[3];
+  float lo[4] = {0, 0, 0, 0}, scale[4] = {0, 0, 0, 0};  // the fourth lane unused
   int count;
 
   Binner(const Box4& centroids, uint32_t primitives) : count(int(std::clamp<uint32_t>(primitives, 4, kBins))) {
@@ -103,6 +123,20 @@ struct Binner {
     const float f = (r.centroid(axis) - lo[axis]) * scale[axis];
     return f > 0 ? (f < float(count - 1) ? int(f) : count - 1) : 0;
   }
+  /// bin(r, axis) for the three axes at once (the fourth lane is unused).
+  std::array<int, 4> bins(const BuildRef& r) const {
+    std::array<int, 4> out;
+#if defined(__SSE2__)
+    // max(NaN, 0) is 0 (the second operand), as `f > 0` is false for NaN; min clamps the top;
+    // truncation is int(f).
+    const __m128 f = _mm_mul_ps(_mm_sub_ps(r.centroids(), _mm_loadu_ps(lo)), _mm_loadu_ps(scale));
+    const __m128 clamped = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(float(count - 1)));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out.data()), _mm_cvttps_epi32(clamped));
+#else
+    for (int a = 0; a < 3; ++a) out[size_t(a)] = bin(r, a);
+#endif
+    return out;
+  }
 };
 
 class Builder {
@@ -114,11 +148,7 @@ class Builder {
     nodes.reserve(refs_.size() * 2 / std::max(1, options_.max_leaf_size) + 1);
     if (refs_.empty()) return nodes;
     Extent all;
-    for (const BuildRef& r : refs_) {
-      all.box.grow(r);
-      const float c[4] = {r.centroid(0), r.centroid(1), r.centroid(2), 0};
-      all.centroids.grow_point(c);
-    }
+    for (const BuildRef& r : refs_) add(all, r);
     build_node(0, uint32_t(refs_.size()), all, 0, threads, nodes);
     return nodes;
   }
@@ -215,8 +245,7 @@ class Builder {
 
   static void add(Extent& e, const BuildRef& r) {
     e.box.grow(r);
-    const float c[4] = {r.centroid(0), r.centroid(1), r.centroid(2), 0};
-    e.centroids.grow_point(c);
+    grow_by_centroid(e.centroids, r);
   }
 
   // Moves the refs for which `goes_left` holds to the front of [begin, end) and returns the
@@ -238,14 +267,38 @@ class Builder {
 
   // Bins refs_[begin, end) on all three axes at once.
   void bin(uint32_t begin, uint32_t end, const Binner& binner, Bins& bins) const {
-    for (uint32_t i = begin; i < end; ++i) {
-      const BuildRef& ref = refs_[i];
-      for (int axis = 0; axis < 3; ++axis) {
-        Bin& b = bins[size_t(axis)][size_t(binner.bin(ref, axis))];
+    const auto add_to = [&](Bins& to, const BuildRef& ref) {
+      const std::array<int, 4> at = binner.bins(ref);
+      for (size_t axis = 0; axis < 3; ++axis) {
+        Bin& b = to[axis][size_t(at[axis])];
         b.box.grow(ref);
         ++b.count;
       }
+    };
+    // Neighbouring refs mostly fall in the same bins; alternating between two sets of bins
+    // lets one ref's update start before the previous one's has been stored.
+    constexpr uint32_t kTwoSets = 1024;
+    if (end - begin < kTwoSets) {
+      for (uint32_t i = begin; i < end; ++i) add_to(bins, refs_[i]);
+      return;
     }
+    Bins odd;
+    odd.reset(binner.count);
+    uint32_t i = begin;
+    for (; i + 1 < end; i += 2) {
+      add_to(bins, refs_[i]);
+      add_to(odd, refs_[i + 1]);
+    }
+    if (i < end) add_to(bins, refs_[i]);
+    merge(bins, odd, binner.count);
+  }
+
+  static void merge(Bins& into, const Bins& from, int count) {
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t b = 0; b < size_t(count); ++b) {
+        into[a][b].box.grow(from[a][b].box);
+        into[a][b].count += from[a][b].count;
+      }
   }
 
   // The cheapest SAH split over all axes, costs in units of half node area (not divided by
@@ -270,12 +323,7 @@ class Builder {
         }
       }
       for (std::thread& w : workers) w.join();
-      for (const Bins& p : partial)
-        for (size_t a = 0; a < 3; ++a)
-          for (size_t b = 0; b < size_t(count); ++b) {
-            bins[a][b].box.grow(p[a][b].box);
-            bins[a][b].count += p[a][b].count;
-          }
+      for (const Bins& p : partial) merge(bins, p, count);
     } else {
       bin(begin, end, binner, bins);
     }
