@@ -5,6 +5,7 @@
 //   mjray-bench --mesh FILE.obj --accel none|grid|bvh|embree --rays primary|incoherent|shadow
 //               [--threads N] [--build-threads N] [--grid N | --grid-optimal] [--repeat K]
 //               [--max-rays N] [--ray-count N] [--seed N] [--min-ms N] [--closest]
+//               [--embree-flags robust|default]
 //
 // Build: K builds, median. Trace: one warm-up pass, then K timed samples, each as many passes
 // over the rays as make it last ≥ --min-ms milliseconds (default 250); the median per-pass time is
@@ -55,6 +56,8 @@ struct Options {
   uint64_t seed = 1;
   double min_seconds = 0.25;  ///< shortest timed trace sample
   bool closest = false;       ///< shadow rays as closest-hit queries (to compare with occluded)
+  /// Embree's scene flags: "robust" (what mjray renders with) or its faster "default".
+  std::string embree_flags = "robust";
 };
 
 /// One query: a ray and its range (shadow rays stop short of the light).
@@ -66,7 +69,8 @@ struct Query {
 constexpr const char* kUsage =
     "usage: mjray-bench --mesh FILE.obj --accel none|grid|bvh|embree --rays primary|incoherent|shadow\n"
     "                   [--threads N] [--build-threads N] [--grid N | --grid-optimal] [--repeat K]\n"
-    "                   [--max-rays N] [--ray-count N] [--seed N] [--min-ms N] [--closest]\n";
+    "                   [--max-rays N] [--ray-count N] [--seed N] [--min-ms N] [--closest]\n"
+    "                   [--embree-flags robust|default]\n";
 
 /// Prints the problem and the usage to stderr and exits 2 (as mjray does for a bad command line).
 [[noreturn]] void usage(const std::string& problem) {
@@ -106,6 +110,10 @@ Options parse(int argc, char** argv) {
     else if (a == "--seed") o.seed = uint64_t(number());
     else if (a == "--min-ms") o.min_seconds = double(number()) / 1000;
     else if (a == "--closest") o.closest = true;
+    else if (a == "--embree-flags") {
+      o.embree_flags = value();
+      if (o.embree_flags != "robust" && o.embree_flags != "default") usage("--embree-flags takes robust or default");
+    }
     else if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
@@ -281,7 +289,10 @@ int main(int argc, char** argv) {
     const bool shadow = o.rays == "shadow" && !o.closest;
 
     // Build K times; keep the last structure.
+    // Embree is timed alone: its hits are not refined with mjray's triangle test.
     AcceleratorOptions accel_options{o.accel, o.grid, o.build_threads};
+    accel_options.embree_exact_hits = false;
+    accel_options.embree_robust = o.embree_flags == "robust";
     std::vector<double> builds;
     std::unique_ptr<Accelerator> accel;
     for (int k = 0; k < o.repeat; ++k) {
@@ -315,13 +326,14 @@ int main(int argc, char** argv) {
                 "\"ray_kind\": \"%s\", \"query\": \"%s\", \"rays\": %zu, \"hits\": %zu, \"repeat\": %d, \"load_seconds\": %.6f, "
                 "\"build_seconds\": %.6f, \"build_seconds_min\": %.6f, \"accel_bytes\": %zu, "
                 "\"bytes_per_triangle\": %.2f, \"trace_seconds\": %.6f, \"trace_seconds_min\": %.6f, "
-                "\"rays_per_second\": %.1f, \"passes\": %d, \"build_threads\": %d}\n",
+                "\"rays_per_second\": %.1f, \"passes\": %d, \"build_threads\": %d, \"embree_flags\": \"%s\"}\n",
                 json_escape(o.mesh).c_str(), world.primitives.triangles.size(), std::string(accel->name()).c_str(),
                 grid_resolution, o.threads, o.rays.c_str(), shadow ? "occluded" : "intersect", rays.size(), hits, o.repeat, load_seconds,
                 median(builds), *std::min_element(builds.begin(), builds.end()), accel->memory_bytes(),
                 world.primitives.triangles.empty() ? 0.0 : double(accel->memory_bytes()) / double(world.primitives.triangles.size()),
                 trace_seconds, *std::min_element(traces.begin(), traces.end()),
-                trace_seconds > 0 ? double(rays.size()) / trace_seconds : 0.0, passes, o.build_threads);
+                trace_seconds > 0 ? double(rays.size()) / trace_seconds : 0.0, passes, o.build_threads,
+                o.accel == "embree" ? o.embree_flags.c_str() : "");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mjray-bench: error: %s\n", e.what());
     return 1;

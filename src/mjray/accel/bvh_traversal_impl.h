@@ -84,6 +84,57 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
   return mask;
 }
 
+/// The primitives of the leaf run [first, first + count) (count ≤ 4) that need the full test:
+/// a bit per entry. A triangle is left out only when the watertight test would reject it at its
+/// edge functions: they are computed here for four triangles at once, with the same float
+/// operations in the same order as intersect_triangle, and a triangle is dropped only when they
+/// have strictly mixed signs and none is zero (zero sends intersect_triangle to its double
+/// fallback). Shapes always need their test.
+inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& ray, uint32_t first, uint32_t count) {
+#if defined(__SSE2__)
+  const LeafPrimitive* leaf = bvh.leaves + first;
+  unsigned shapes = 0;
+  for (uint32_t i = 0; i < count; ++i) shapes |= unsigned(leaf[i].prim >= bvh.triangle_count) << i;
+  if (count < 2 || shapes == (1u << count) - 1) return (1u << count) - 1;
+  // Rows of x, y, z per corner over the four entries (a short run repeats its last entry).
+  const auto corner = [&](size_t offset, __m128 (&xyz)[3]) {
+    __m128 r[4];
+    for (uint32_t i = 0; i < 4; ++i) {
+      const auto* p = reinterpret_cast<const float*>(reinterpret_cast<const char*>(&leaf[std::min(i, count - 1)]) + offset);
+      r[i] = _mm_loadu_ps(p);
+    }
+    _MM_TRANSPOSE4_PS(r[0], r[1], r[2], r[3]);
+    xyz[0] = r[0], xyz[1] = r[1], xyz[2] = r[2];
+  };
+  __m128 p0[3], p1[3], p2[3];
+  corner(offsetof(LeafPrimitive, p0), p0);
+  corner(offsetof(LeafPrimitive, p1), p1);
+  corner(offsetof(LeafPrimitive, p2), p2);
+  const auto kx = size_t(ray.kx), ky = size_t(ray.ky), kz = size_t(ray.kz);
+  const __m128 ox = _mm_set1_ps(ray.origin[kx]), oy = _mm_set1_ps(ray.origin[ky]), oz = _mm_set1_ps(ray.origin[kz]);
+  const __m128 sx = _mm_set1_ps(ray.sx), sy = _mm_set1_ps(ray.sy);
+  const __m128 az = _mm_sub_ps(p0[kz], oz), bz = _mm_sub_ps(p1[kz], oz), cz = _mm_sub_ps(p2[kz], oz);
+  const __m128 ax = _mm_add_ps(_mm_sub_ps(p0[kx], ox), _mm_mul_ps(sx, az));
+  const __m128 ay = _mm_add_ps(_mm_sub_ps(p0[ky], oy), _mm_mul_ps(sy, az));
+  const __m128 bx = _mm_add_ps(_mm_sub_ps(p1[kx], ox), _mm_mul_ps(sx, bz));
+  const __m128 by = _mm_add_ps(_mm_sub_ps(p1[ky], oy), _mm_mul_ps(sy, bz));
+  const __m128 cx = _mm_add_ps(_mm_sub_ps(p2[kx], ox), _mm_mul_ps(sx, cz));
+  const __m128 cy = _mm_add_ps(_mm_sub_ps(p2[ky], oy), _mm_mul_ps(sy, cz));
+  const __m128 e0 = _mm_sub_ps(_mm_mul_ps(bx, cy), _mm_mul_ps(by, cx));
+  const __m128 e1 = _mm_sub_ps(_mm_mul_ps(cx, ay), _mm_mul_ps(cy, ax));
+  const __m128 e2 = _mm_sub_ps(_mm_mul_ps(ax, by), _mm_mul_ps(ay, bx));
+  const __m128 zero = _mm_setzero_ps();
+  const __m128 negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(e0, zero), _mm_cmplt_ps(e1, zero)), _mm_cmplt_ps(e2, zero));
+  const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(e0, zero), _mm_cmpgt_ps(e1, zero)), _mm_cmpgt_ps(e2, zero));
+  const __m128 zeroes = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(e0, zero), _mm_cmpeq_ps(e1, zero)), _mm_cmpeq_ps(e2, zero));
+  const unsigned rejected = unsigned(_mm_movemask_ps(_mm_andnot_ps(zeroes, _mm_and_ps(negative, positive))));
+  return ((1u << count) - 1) & (~rejected | shapes);
+#else
+  (void)bvh, (void)ray, (void)first;
+  return (1u << count) - 1;
+#endif
+}
+
 /// The query kQuery for t in `t_range`: the closest hit (written to *hit), any hit, or a
 /// blocking hit (opaque, or one `filter` says blocks); returns whether there was one.
 /// Children are visited nearest entry first, and popped entries the ray cannot reach before
@@ -124,7 +175,8 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
         continue;
       }
     } else {
-      for (uint32_t i = current.child, end = current.child + current.count; i < end; ++i) {
+      for (unsigned m = leaf_candidates(bvh, tri_ray, current.child, current.count); m != 0; m &= m - 1) {
+        const uint32_t i = current.child + uint32_t(std::countr_zero(m));
         const LeafPrimitive& leaf = bvh.leaves[i];
         // Once something is hit, a primitive at exactly the same t may still win: the lower
         // primitive id does, as with every accelerator.
@@ -194,7 +246,10 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     // Compute the leaves' primitives first.
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
-      for (uint32_t k = node.first(i), end = k + node.count(i); k < end; ++k) {
+      const uint32_t first = node.first(i);
+      for (unsigned candidates = leaf_candidates(bvh, tri_ray, first, node.count(i)); candidates != 0;
+           candidates &= candidates - 1) {
+        const uint32_t k = first + uint32_t(std::countr_zero(candidates));
         const LeafPrimitive& leaf = bvh.leaves[k];
         if (leaf.prim < bvh.triangle_count) {
           const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);

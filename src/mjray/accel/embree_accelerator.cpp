@@ -143,7 +143,7 @@ bool valid_query(const Ray& ray, float t_max) {
 
 }  // namespace
 
-EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, bool exact_hits)
+EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, bool exact_hits, bool robust)
     : prims_(prims), bounds_(prims.bounds()), exact_hits_(exact_hits) {
   // Create the device, counting every byte it allocates.
   const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
@@ -154,7 +154,8 @@ EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, boo
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
   // Robust mode makes Embree's triangle test watertight, as mjray's own (Woop et al.) is;
   // filtered occlusion queries need the context filter.
-  rtcSetSceneFlags(scene_, RTCSceneFlags(RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
+  const int robust_flag = robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
+  rtcSetSceneFlags(scene_, RTCSceneFlags(robust_flag | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
 
   // Triangles: one geometry over the world-space vertices, in primitive order.
   if (!prims.triangles.empty()) {

@@ -22,7 +22,9 @@ class EmbreeAccelerator final : public Accelerator {
   /// Throws SceneError when Embree cannot create a device or build the scene.
   /// With `exact_hits` (the default) each hit is recomputed with mjray's own triangle test, so
   /// images match the other accelerators bit for bit; benchmarks turn it off to time Embree alone.
-  explicit EmbreeAccelerator(const PrimitiveSet& prims, int threads = 0, bool exact_hits = true);
+  /// `robust` (the default) sets Embree's robust scene flag, which makes its triangle test
+  /// watertight as mjray's is; benchmarks may compare Embree's faster default too.
+  explicit EmbreeAccelerator(const PrimitiveSet& prims, int threads = 0, bool exact_hits = true, bool robust = true);
   ~EmbreeAccelerator() override;
   EmbreeAccelerator(const EmbreeAccelerator&) = delete;
   EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;

@@ -25,7 +25,8 @@ std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const A
   if (options.kind == "grid") return std::make_unique<UniformGrid>(prims, options.grid_size);
   if (options.kind == "embree") {
 #ifdef MJRAY_HAVE_EMBREE
-    return std::make_unique<EmbreeAccelerator>(prims, options.threads, options.embree_exact_hits);
+    return std::make_unique<EmbreeAccelerator>(prims, options.threads, options.embree_exact_hits,
+                                               options.embree_robust);
 #else
     throw SceneError("accelerator 'embree' is not available: this mjray was built without Embree "
                      "(install libembree-dev and configure with -DMJRAY_WITH_EMBREE=ON)");

@@ -15,6 +15,7 @@ struct AcceleratorOptions {
   int grid_size = 0;         ///< voxels per axis for "grid"; 0 with kind "grid" = optimal
   int threads = 0;           ///< build threads, 0 = all cores
   bool embree_exact_hits = true;  ///< "embree": refine hits with mjray's triangle test (see EmbreeAccelerator)
+  bool embree_robust = true;      ///< "embree": the robust scene flag (see EmbreeAccelerator)
 };
 
 /// The names --accel accepts in this build.
