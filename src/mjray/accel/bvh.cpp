@@ -105,10 +105,16 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
     throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
                             " primitives; use --accel embree for this scene");
   static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
-  std::vector<Bounds3> prim_bounds(prims.size());
-  in_chunks(prim_bounds.size(), [&](size_t prim) { prim_bounds[prim] = prims.primitive_bounds(uint32_t(prim)); });
-  const BvhBuildResult built = build_bvh(prim_bounds, {.threads = threads});
+  // Each structure is released as soon as the next is made: the build's peak memory is the
+  // mesh scene's peak.
+  BvhBuildResult built = build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
+                                   {.threads = threads});
   nodes_ = collapse_to_wide(built.nodes);
+  if (!built.nodes.empty()) {
+    const BvhNode& root = built.nodes.front();
+    bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
+  }
+  std::vector<BvhNode>().swap(built.nodes);
   leaf_prims_.resize(built.order.size());
   in_chunks(built.order.size(), [&](size_t i) {
     LeafPrimitive& leaf = leaf_prims_[i];
@@ -122,10 +128,6 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
       leaf.p0 = leaf.p1 = leaf.p2 = {0, 0, 0};
     }
   });
-  if (!built.nodes.empty()) {
-    const BvhNode& root = built.nodes.front();
-    bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
-  }
 }
 
 size_t Bvh::memory_bytes() const {

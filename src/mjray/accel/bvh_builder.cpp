@@ -372,12 +372,17 @@ class Builder {
 }  // namespace
 
 BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options) {
+  return build_bvh(uint32_t(bounds.size()), [&](uint32_t prim) { return bounds[prim]; }, options);
+}
+
+BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
+                         const BvhBuildOptions& options) {
   std::vector<BuildRef> refs;
-  refs.reserve(bounds.size());
-  for (uint32_t prim = 0; prim < bounds.size(); ++prim) {
-    if (!is_finite(bounds[prim])) continue;
+  refs.reserve(count);
+  for (uint32_t prim = 0; prim < count; ++prim) {
+    const Bounds3 b = bounds_of(prim);
+    if (!is_finite(b)) continue;
     BuildRef r;
-    const Bounds3& b = bounds[prim];
     r.lo[0] = b.lo.x, r.lo[1] = b.lo.y, r.lo[2] = b.lo.z, r.lo[3] = std::bit_cast<float>(prim);
     r.hi[0] = b.hi.x, r.hi[1] = b.hi.y, r.hi[2] = b.hi.z, r.hi[3] = 0;
     refs.push_back(r);

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct BvhBuildOptions {
 /// Builds over primitives 0..bounds.size()-1 with world-space `bounds[prim]`. Primitives with
 /// empty or non-finite bounds are left out.
 BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options);
+/// The same over primitives 0..count-1 whose bounds `bounds_of(prim)` gives, asked once each
+/// (so that no array of all bounds need be held beside the build's own copy).
+BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
+                         const BvhBuildOptions& options);
 
 /// Collapses a binary hierarchy into kBvhWidth-wide nodes (root first) by repeatedly opening
 /// the inner child with the largest surface area; leaves keep their `order` ranges.
