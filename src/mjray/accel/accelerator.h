@@ -20,12 +20,17 @@ namespace mjray {
 /// primitive may be reported more than once.
 class HitFilter {
  public:
-  explicit HitFilter(bool sees_opaque = false) : sees_opaque(sees_opaque) {}
+  explicit HitFilter(bool sees_opaque = false, bool ignores_transmissive = false)
+      : sees_opaque(sees_opaque), ignores_transmissive(ignores_transmissive) {}
   virtual ~HitFilter() = default;
   /// True stops the query: the ray counts as occluded.
   virtual bool blocks(const Hit& hit) = 0;
 
   const bool sees_opaque;
+  /// A filter that says nothing of transmissive hits (blocks false for them, and they do not
+  /// change its state) may set this: an accelerator may then skip transmissive primitives
+  /// without testing them. It may still show them.
+  const bool ignores_transmissive;
 };
 
 /// A spatial index over a PrimitiveSet. Implementations: none (brute force), grid, bvh,

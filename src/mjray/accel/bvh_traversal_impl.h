@@ -251,6 +251,8 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
            candidates &= candidates - 1) {
         const uint32_t k = first + uint32_t(std::countr_zero(candidates));
         const LeafPrimitive& leaf = bvh.leaves[k];
+        if constexpr (kFiltered)
+          if (filter->ignores_transmissive && bvh.prims->transmissive(leaf.prim)) continue;
         if (leaf.prim < bvh.triangle_count) {
           const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
           if (!tri) continue;

@@ -12,7 +12,7 @@ namespace {
 /// Sees every hit and keeps the nearest opaque one (ties: the lower primitive id).
 class NearestOpaque final : public HitFilter {
  public:
-  explicit NearestOpaque(const PrimitiveSet& prims) : HitFilter(true), prims_(prims) {}
+  explicit NearestOpaque(const PrimitiveSet& prims) : HitFilter(true, true), prims_(prims) {}
   bool blocks(const Hit& hit) override {
     if (!prims_.transmissive(hit.prim) &&
         (!nearest || hit.t < nearest->t || (hit.t == nearest->t && hit.prim < nearest->prim)))
