@@ -92,15 +92,8 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
     : prims_(prims),
       triangle_count_(uint32_t(prims.triangles.size())),
       use_avx_(simd == BvhSimd::kBest && cpu_has_avx()) {
-  // Compute primitive bounds, build the binary tree, widen it, then copy the triangles
-  // into leaf order; the per-primitive loops in chunks on all the build's threads.
-  const int workers = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  const auto in_chunks = [workers](size_t count, const auto& body) {
-    constexpr int kChunks = 64;
-    parallel_for(kChunks, workers, [&](int chunk, int) {
-      for (size_t i = count * size_t(chunk) / kChunks, end = count * size_t(chunk + 1) / kChunks; i < end; ++i) body(i);
-    });
-  };
+  // Build the binary tree over the primitives' bounds, widen it, then copy the triangles into
+  // leaf order.
   if (prims.size() > BvhWideNode::kMaxLeafPrimitives)
     throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
                             " primitives; use --accel embree for this scene");
@@ -116,16 +109,22 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
   }
   std::vector<BvhNode>().swap(built.nodes);
   leaf_prims_.resize(built.order.size());
-  in_chunks(built.order.size(), [&](size_t i) {
-    LeafPrimitive& leaf = leaf_prims_[i];
-    leaf.prim = built.order[i];
-    if (prims.is_triangle(leaf.prim)) {
-      const auto v = prims.triangle_vertices(leaf.prim);
-      leaf.p0 = std::bit_cast<std::array<float, 3>>(v[0]);
-      leaf.p1 = std::bit_cast<std::array<float, 3>>(v[1]);
-      leaf.p2 = std::bit_cast<std::array<float, 3>>(v[2]);
-    } else {
-      leaf.p0 = leaf.p1 = leaf.p2 = {0, 0, 0};
+  // The copy in chunks on all the build's threads.
+  constexpr int kChunks = 64;
+  const size_t count = built.order.size();
+  const int workers = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  parallel_for(kChunks, workers, [&](int chunk, int) {
+    for (size_t i = count * size_t(chunk) / kChunks, end = count * size_t(chunk + 1) / kChunks; i < end; ++i) {
+      LeafPrimitive& leaf = leaf_prims_[i];
+      leaf.prim = built.order[i];
+      if (prims.is_triangle(leaf.prim)) {
+        const auto v = prims.triangle_vertices(leaf.prim);
+        leaf.p0 = std::bit_cast<std::array<float, 3>>(v[0]);
+        leaf.p1 = std::bit_cast<std::array<float, 3>>(v[1]);
+        leaf.p2 = std::bit_cast<std::array<float, 3>>(v[2]);
+      } else {
+        leaf.p0 = leaf.p1 = leaf.p2 = {0, 0, 0};
+      }
     }
   });
 }

@@ -92,10 +92,12 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
 /// fallback). Shapes always need their test.
 inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& ray, uint32_t first, uint32_t count) {
 #if defined(__SSE2__)
+  const unsigned all = (1u << count) - 1;
+  if (count < 2) return all;
   const LeafPrimitive* leaf = bvh.leaves + first;
   unsigned shapes = 0;
   for (uint32_t i = 0; i < count; ++i) shapes |= unsigned(leaf[i].prim >= bvh.triangle_count) << i;
-  if (count < 2 || shapes == (1u << count) - 1) return (1u << count) - 1;
+  if (shapes == all) return all;
   // Rows of x, y, z per corner over the four entries (a short run repeats its last entry).
   const auto corner = [&](size_t offset, __m128 (&xyz)[3]) {
     __m128 r[4];
@@ -128,7 +130,7 @@ inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& r
   const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(e0, zero), _mm_cmpgt_ps(e1, zero)), _mm_cmpgt_ps(e2, zero));
   const __m128 zeroes = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(e0, zero), _mm_cmpeq_ps(e1, zero)), _mm_cmpeq_ps(e2, zero));
   const unsigned rejected = unsigned(_mm_movemask_ps(_mm_andnot_ps(zeroes, _mm_and_ps(negative, positive))));
-  return ((1u << count) - 1) & (~rejected | shapes);
+  return all & (~rejected | shapes);
 #else
   (void)bvh, (void)ray, (void)first;
   return (1u << count) - 1;

@@ -29,7 +29,7 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
   if (!pyramid) return;
   constexpr uint32_t kNone = ~uint32_t(0);
   const uint32_t own = in_front == 4 ? si.prim : kNone;
-  const auto found = accel.region_primitives(*pyramid, own, std::span(prims_).first(kCapacity));
+  const auto found = accel.region_primitives(*pyramid, own, std::span(candidates_).first(kCapacity));
   if (!found) return;
   if (*found == 0) {
     clear_ = true;
@@ -38,10 +38,10 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
   size_t size = *found;
   // The rays are tested against the surface's own primitive too, exactly as the accelerator
   // would: what cannot stand in the way is not trusted to miss when rounding is involved.
-  if (own != kNone) prims_[size++] = own;
+  if (own != kNone) candidates_[size++] = own;
   for (size_t i = 0; i < size; ++i)
-    if (prims_[i] == likely_blocker) std::swap(prims_[i], prims_[0]);
-  list_.emplace(prims, std::span<const uint32_t>(prims_.data(), size));
+    if (candidates_[i] == likely_blocker) std::swap(candidates_[i], candidates_[0]);
+  list_.emplace(prims, std::span<const uint32_t>(candidates_.data(), size));
   occluders_ = &*list_;
 }
 

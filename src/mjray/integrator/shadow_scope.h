@@ -39,7 +39,7 @@ class ShadowScope {
   const Accelerator& occluders() const { return *occluders_; }
 
  private:
-  std::array<uint32_t, kCapacity + 1> prims_;  // one more for the shading point's own primitive
+  std::array<uint32_t, kCapacity + 1> candidates_;  // one more for the shading point's own primitive
   std::optional<PrimitiveList> list_;
   const Accelerator* occluders_;
   bool clear_ = false;

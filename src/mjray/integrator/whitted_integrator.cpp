@@ -47,13 +47,13 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
-    uint32_t* cached = state.occluders.slot(index);
     if (n == 1) {
       result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state,
                              ShadowScope(accel_));
       continue;
     }
     // Found once for all n×n samples: what their shadow rays can hit, if anything.
+    const uint32_t* cached = state.occluders.slot(index);
     const ShadowScope scope(world_.primitives, accel_, si, light, cached ? *cached : OccluderCache::kNone);
     Color sum;
     for (int j = 0; j < n; ++j)
