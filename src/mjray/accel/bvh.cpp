@@ -107,7 +107,7 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
     const BvhNode& root = built.nodes.front();
     bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
   }
-  std::vector<BvhNode>().swap(built.nodes);
+  BvhNodes().swap(built.nodes);
   leaf_prims_.resize(built.order.size());
   // The copy in chunks on all the build's threads.
   constexpr int kChunks = 64;

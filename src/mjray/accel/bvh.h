@@ -5,9 +5,11 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
+#include "mjray/core/large_pages.h"
 #include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
@@ -40,6 +42,9 @@ struct alignas(32) BvhWideNode {
   uint32_t count(size_t i) const { return child[i] & ((1u << kCountBits) - 1); }
 };
 static_assert(sizeof(BvhWideNode) == 224);
+
+/// Wide nodes as the BVH keeps them: on large pages, which rays read at random.
+using BvhWideNodes = std::vector<BvhWideNode, LargePageAllocator<BvhWideNode>>;
 
 /// A primitive as a leaf stores it: a triangle's world-space corners copied in leaf order
 /// (so leaf tests read contiguous memory), or just the id of a shape.
@@ -79,9 +84,9 @@ class Bvh final : public Accelerator {
   size_t memory_bytes() const override;
 
   /// The nodes, root first (none for an empty world); exposed for tests and statistics.
-  const std::vector<BvhWideNode>& nodes() const { return nodes_; }
+  std::span<const BvhWideNode> nodes() const { return nodes_; }
   /// The primitives in leaf order.
-  const std::vector<LeafPrimitive>& leaf_primitives() const { return leaf_prims_; }
+  std::span<const LeafPrimitive> leaf_primitives() const { return leaf_prims_; }
   /// Whether traversal runs the 8-wide AVX slab test (chosen at construction).
   bool uses_avx() const { return use_avx_; }
 
@@ -92,8 +97,8 @@ class Bvh final : public Accelerator {
   const PrimitiveSet& prims_;
   uint32_t triangle_count_ = 0;
   bool use_avx_ = false;
-  std::vector<BvhWideNode> nodes_;
-  std::vector<LeafPrimitive> leaf_prims_;
+  BvhWideNodes nodes_;
+  std::vector<LeafPrimitive, LargePageAllocator<LeafPrimitive>> leaf_prims_;
   Bounds3 bounds_;
 };
 

@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <future>
-#include <system_error>
+#include <deque>
+#include <memory>
+#include <mutex>
 #include <thread>
+
+#include "mjray/core/fork_join.h"
+#include "mjray/core/parallel_for.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -16,9 +20,10 @@ namespace mjray {
 namespace {
 
 constexpr int kBins = 32;
-// Below this many primitives a subtree is built on the current thread.
+// Below this many primitives a subtree is built by the thread that reached it; above, its
+// first child is forked for any thread of the pool to take.
 constexpr uint32_t kMinParallelSize = 8192;
-// Above this many primitives a node's binning is shared among its threads.
+// Above this many primitives a node's binning is shared among the pool's threads.
 constexpr uint32_t kMinParallelBinning = 65536;
 // Deeper than this, splits halve the primitives, so the depth (and the traversal stack)
 // stays under kMaxSahDepth + 32.
@@ -63,6 +68,8 @@ struct BuildRef : Box4 {
   }
 #endif
 };
+
+using BuildRefs = std::vector<BuildRef, LargePageAllocator<BuildRef>>;
 
 /// Grows `box` (whose fourth lanes are 0) by the centroid of `r`.
 inline void grow_by_centroid(Box4& box, const BuildRef& r) {
@@ -139,18 +146,61 @@ struct Binner {
   }
 };
 
+// The build's references to the primitives with finite bounds, in id order, and their
+// extent; made in chunks on `threads` threads.
+BuildRefs make_refs(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int threads,
+                    Extent& extent) {
+  constexpr uint32_t kChunks = 64;
+  BuildRefs refs(count);
+  std::array<uint32_t, kChunks> kept{};  // refs made by each chunk, at its start
+  std::array<Extent, kChunks> extents;
+  parallel_for(int(kChunks), threads, [&](int c, int) {
+    const uint32_t chunk = uint32_t(c);
+    const uint32_t begin = uint32_t(uint64_t(count) * chunk / kChunks);
+    const uint32_t end = uint32_t(uint64_t(count) * (chunk + 1) / kChunks);
+    uint32_t at = begin;
+    Extent local;  // not extents[chunk], whose cache line other threads write too
+    for (uint32_t prim = begin; prim < end; ++prim) {
+      const Bounds3 b = bounds_of(prim);
+      if (!is_finite(b)) continue;
+      BuildRef& r = refs[at++];
+      r.lo[0] = b.lo.x, r.lo[1] = b.lo.y, r.lo[2] = b.lo.z, r.lo[3] = std::bit_cast<float>(prim);
+      r.hi[0] = b.hi.x, r.hi[1] = b.hi.y, r.hi[2] = b.hi.z, r.hi[3] = 0;
+      local.box.grow(r);
+      grow_by_centroid(local.centroids, r);
+    }
+    extents[chunk] = local;
+    kept[chunk] = at - begin;
+  });
+  // Close the gaps left by primitives without finite bounds (usually there are none).
+  uint32_t size = 0;
+  for (uint32_t chunk = 0; chunk < kChunks; ++chunk) {
+    const uint32_t begin = uint32_t(uint64_t(count) * chunk / kChunks);
+    if (size != begin) std::copy_n(refs.begin() + begin, kept[chunk], refs.begin() + size);
+    size += kept[chunk];
+    extent.box.grow(extents[chunk].box);
+    extent.centroids.grow(extents[chunk].centroids);
+  }
+  refs.resize(size);
+  return refs;
+}
+
 class Builder {
  public:
-  Builder(std::vector<BuildRef> refs, const BvhBuildOptions& options) : refs_(std::move(refs)), options_(options) {}
+  Builder(BuildRefs refs, const BvhBuildOptions& options, ForkJoinPool& pool)
+      : refs_(std::move(refs)), options_(options), pool_(pool) {}
 
-  std::vector<BvhNode> build(int threads) {
-    std::vector<BvhNode> nodes;
+  // Builds over all the refs, whose extent is `all`.
+  BvhNodes build(const Extent& all) {
+    BvhNodes nodes;
     nodes.reserve(refs_.size() * 2 / std::max(1, options_.max_leaf_size) + 1);
     if (refs_.empty()) return nodes;
-    Extent all;
-    for (const BuildRef& r : refs_) add(all, r);
-    build_node(0, uint32_t(refs_.size()), all, 0, threads, nodes);
-    return nodes;
+    build_node(0, uint32_t(refs_.size()), all, 0, nodes);
+    if (forked_.empty()) return nodes;
+    BvhNodes joined;
+    joined.reserve(nodes.size() + forked_size());
+    splice(nodes, 0, joined);
+    return joined;
   }
 
   std::vector<uint32_t> order() const {
@@ -166,9 +216,13 @@ class Builder {
     float cost = kInfinity;
   };
 
+  // A node's `count` when it stands for the root of forked subtree number `offset`.
+  static constexpr uint16_t kForked = 0xffff;
+
   // Appends the subtree over refs_[begin, end) (whose extent is `extent`) to `out`,
-  // depth-first, child indices absolute in `out`.
-  void build_node(uint32_t begin, uint32_t end, const Extent& extent, int depth, int threads, std::vector<BvhNode>& out) {
+  // depth-first (an interior node's first child follows it, `offset` is its second), except
+  // that a forked first child is a kForked node.
+  void build_node(uint32_t begin, uint32_t end, const Extent& extent, int depth, BvhNodes& out) {
     const uint32_t n = end - begin;
     const uint32_t index = uint32_t(out.size());
     out.push_back({{extent.box.lo[0], extent.box.lo[1], extent.box.lo[2]},
@@ -190,7 +244,7 @@ class Builder {
     bool use_median = depth >= kMaxSahDepth || !(centroids.extent(widest) > 0);
     if (!use_median) {
       const Binner binner(centroids, n);
-      const Split split = find_split(begin, end, binner, threads);
+      const Split split = find_split(begin, end, binner);
       const float leaf_cost = float(n) * extent.box.half_area();
       if (n <= uint32_t(options_.max_leaf_size) && leaf_cost <= split.cost) return make_leaf();
       if (split.axis < 0) {
@@ -214,27 +268,44 @@ class Builder {
     out[index].axis = uint8_t(axis);
 
     // Build the children: the first right after this node, the second after the first's
-    // subtree; large subtrees on two threads, spliced in afterwards.
-    std::vector<BvhNode> first, second;
-    std::future<void> task;  // declared after its outputs: its destructor waits for it
-    if (threads > 1 && n >= kMinParallelSize) {
-      try {
-        task = std::async(std::launch::async, [&] { build_node(begin, mid, left, depth + 1, threads / 2, first); });
-      } catch (const std::system_error&) {
-        threads = 1;  // no thread to be had: build this subtree serially
-      }
-    }
-    if (task.valid()) {
-      build_node(mid, end, right, depth + 1, threads - threads / 2, second);
-      task.get();
-      append(out, first);
+    // subtree. A large first child is forked into a subtree of its own, spliced in later.
+    if (pool_.threads() > 1 && n >= kMinParallelSize) {
+      BvhNodes& first = new_forked(out);
+      ForkJoinPool::Task task(pool_, [&, begin, mid, depth] { build_node(begin, mid, left, depth + 1, first); });
       out[index].offset = uint32_t(out.size());
-      append(out, second);
+      build_node(mid, end, right, depth + 1, out);
+      task.join();
     } else {
-      build_node(begin, mid, left, depth + 1, threads, out);
+      build_node(begin, mid, left, depth + 1, out);
       out[index].offset = uint32_t(out.size());
-      build_node(mid, end, right, depth + 1, threads, out);
+      build_node(mid, end, right, depth + 1, out);
     }
+  }
+
+  // Appends to `out` a kForked node for a new, empty subtree, and returns that subtree.
+  BvhNodes& new_forked(BvhNodes& out) {
+    std::lock_guard lock(forked_mutex_);
+    out.push_back({{}, {}, uint32_t(forked_.size()), kForked, 0});
+    return forked_.emplace_back();  // a deque: earlier subtrees stay where they are
+  }
+
+  size_t forked_size() const {
+    size_t size = 0;
+    for (const BvhNodes& subtree : forked_) size += subtree.size();
+    return size;
+  }
+
+  // Appends the subtree at nodes[i] to `out` in plain depth-first order, with forked
+  // subtrees in their places.
+  void splice(const BvhNodes& nodes, uint32_t i, BvhNodes& out) const {
+    const BvhNode& node = nodes[i];
+    if (node.count == kForked) return splice(forked_[node.offset], 0, out);
+    const size_t at = out.size();
+    out.push_back(node);
+    if (node.count > 0) return;
+    splice(nodes, i + 1, out);
+    out[at].offset = uint32_t(out.size());
+    splice(nodes, node.offset, out);
   }
 
   Extent extent_of(uint32_t begin, uint32_t end) const {
@@ -303,26 +374,25 @@ class Builder {
 
   // The cheapest SAH split over all axes, costs in units of half node area (not divided by
   // it, so flat or point-like nodes need no special case).
-  Split find_split(uint32_t begin, uint32_t end, const Binner& binner, int threads) const {
-    // Compute the bins, in slices on several threads for the largest nodes.
+  Split find_split(uint32_t begin, uint32_t end, const Binner& binner) {
+    // Compute the bins, in slices on the pool's threads for the largest nodes.
     const int count = binner.count;
     Bins bins;
     bins.reset(count);
     const uint32_t n = end - begin;
-    if (threads > 1 && n >= kMinParallelBinning) {
-      std::vector<Bins> partial(static_cast<size_t>(threads));
+    const int slices = pool_.threads();
+    if (slices > 1 && n >= kMinParallelBinning) {
+      std::vector<Bins> partial(static_cast<size_t>(slices));
       for (Bins& p : partial) p.reset(count);
-      std::vector<std::thread> workers;
-      for (int t = 0; t < threads; ++t) {
-        const uint32_t lo = begin + uint32_t(uint64_t(n) * uint64_t(t) / uint64_t(threads));
-        const uint32_t hi = begin + uint32_t(uint64_t(n) * uint64_t(t + 1) / uint64_t(threads));
-        if (t == threads - 1) {
-          bin(lo, hi, binner, partial[size_t(t)]);
-        } else {
-          workers.emplace_back([&, lo, hi, t] { bin(lo, hi, binner, partial[size_t(t)]); });
-        }
-      }
-      for (std::thread& w : workers) w.join();
+      const auto bin_slice = [&](int t) {
+        const uint32_t lo = begin + uint32_t(uint64_t(n) * uint64_t(t) / uint64_t(slices));
+        const uint32_t hi = begin + uint32_t(uint64_t(n) * uint64_t(t + 1) / uint64_t(slices));
+        bin(lo, hi, binner, partial[size_t(t)]);
+      };
+      std::deque<ForkJoinPool::Task> tasks;
+      for (int t = 1; t < slices; ++t) tasks.emplace_back(pool_, [&, t] { bin_slice(t); });
+      bin_slice(0);
+      for (ForkJoinPool::Task& task : tasks) task.join();
       for (const Bins& p : partial) merge(bins, p, count);
     } else {
       bin(begin, end, binner, bins);
@@ -357,16 +427,11 @@ class Builder {
     return best;
   }
 
-  static void append(std::vector<BvhNode>& out, const std::vector<BvhNode>& subtree) {
-    const uint32_t shift = uint32_t(out.size());
-    for (BvhNode node : subtree) {
-      if (node.count == 0) node.offset += shift;
-      out.push_back(node);
-    }
-  }
-
-  std::vector<BuildRef> refs_;
+  BuildRefs refs_;
   BvhBuildOptions options_;
+  ForkJoinPool& pool_;
+  std::mutex forked_mutex_;
+  std::deque<BvhNodes> forked_;  // subtrees built as forked tasks
 };
 
 }  // namespace
@@ -377,20 +442,13 @@ BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions&
 
 BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
                          const BvhBuildOptions& options) {
-  std::vector<BuildRef> refs;
-  refs.reserve(count);
-  for (uint32_t prim = 0; prim < count; ++prim) {
-    const Bounds3 b = bounds_of(prim);
-    if (!is_finite(b)) continue;
-    BuildRef r;
-    r.lo[0] = b.lo.x, r.lo[1] = b.lo.y, r.lo[2] = b.lo.z, r.lo[3] = std::bit_cast<float>(prim);
-    r.hi[0] = b.hi.x, r.hi[1] = b.hi.y, r.hi[2] = b.hi.z, r.hi[3] = 0;
-    refs.push_back(r);
-  }
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  Builder builder(std::move(refs), options);
+  Extent all;
+  BuildRefs refs = make_refs(count, bounds_of, threads, all);
+  ForkJoinPool pool(threads);
+  Builder builder(std::move(refs), options, pool);
   BvhBuildResult result;
-  result.nodes = builder.build(threads);
+  result.nodes = builder.build(all);
   result.order = builder.order();
   return result;
 }
@@ -405,28 +463,40 @@ float surface_area(const BvhNode& n) {
 // Turns the binary tree into wide nodes.
 class Collapser {
  public:
-  explicit Collapser(const std::vector<BvhNode>& binary) : binary_(binary) {}
+  explicit Collapser(const BvhNodes& binary) : binary_(binary) {}
 
   // Appends the wide node for binary node `b` and its subtree; returns its index.
-  uint32_t collapse(uint32_t b, std::vector<BvhWideNode>& out) const {
+  uint32_t collapse(uint32_t b, BvhWideNodes& out) const {
     // Gather up to kBvhWidth children, opening the largest inner one each time.
     std::array<uint32_t, kBvhWidth> kids{};
+    // Each kid's surface area, or −1 for a leaf (never opened).
+    std::array<float, kBvhWidth> area{};
     int n = 0;
+    const auto add_kid = [&](uint32_t kid) {
+      kids[size_t(n)] = kid;
+      const BvhNode& node = binary_[kid];
+      area[size_t(n++)] = node.count > 0 ? -1 : surface_area(node);
+      // The second child, if it is opened or collapsed later, is far away in memory: ask for
+      // it now so that these loads overlap rather than wait one after another.
+      if (node.count == 0) __builtin_prefetch(&binary_[node.offset]);
+    };
     if (is_leaf(b)) {
-      kids[size_t(n++)] = b;  // a leaf root becomes the only child of a wide root
+      add_kid(b);  // a leaf root becomes the only child of a wide root
     } else {
-      kids[size_t(n++)] = b + 1;
-      kids[size_t(n++)] = binary_[b].offset;
+      add_kid(b + 1);
+      add_kid(binary_[b].offset);
       while (n < kBvhWidth) {
-        int open = -1;
-        for (int i = 0; i < n; ++i)
-          if (!is_leaf(kids[size_t(i)]) &&
-              (open < 0 || surface_area(binary_[kids[size_t(i)]]) > surface_area(binary_[kids[size_t(open)]])))
-            open = i;
-        if (open < 0) break;
+        int open = 0;
+        for (int i = 1; i < n; ++i)
+          if (area[size_t(i)] > area[size_t(open)]) open = i;
+        if (area[size_t(open)] < 0) break;
+        // The opened node's place goes to its first child, its second child comes last.
         const uint32_t inner = kids[size_t(open)];
-        kids[size_t(open)] = inner + 1;
-        kids[size_t(n++)] = binary_[inner].offset;
+        const int last = n;
+        n = open;
+        add_kid(inner + 1);
+        n = last;
+        add_kid(binary_[inner].offset);
       }
     }
 
@@ -457,17 +527,16 @@ class Collapser {
  private:
   bool is_leaf(uint32_t b) const { return binary_[b].count > 0; }
 
-  const std::vector<BvhNode>& binary_;
+  const BvhNodes& binary_;
 };
 
 }  // namespace
 
-std::vector<BvhWideNode> collapse_to_wide(const std::vector<BvhNode>& binary) {
-  std::vector<BvhWideNode> wide;
+BvhWideNodes collapse_to_wide(const BvhNodes& binary) {
+  BvhWideNodes wide;
   if (binary.empty()) return wide;
   wide.reserve(binary.size() / (kBvhWidth - 1) + 1);
   Collapser(binary).collapse(0, wide);
-  wide.shrink_to_fit();
   return wide;
 }
 

@@ -25,10 +25,13 @@ struct BvhNode {
 };
 static_assert(sizeof(BvhNode) == 32);
 
+/// Binary nodes, on large pages: a million-triangle build fills tens of megabytes at once.
+using BvhNodes = std::vector<BvhNode, LargePageAllocator<BvhNode>>;
+
 /// The built hierarchy: nodes depth-first (root first), and the primitive ids in leaf
 /// order; a leaf's `offset`/`count` index `order`.
 struct BvhBuildResult {
-  std::vector<BvhNode> nodes;
+  BvhNodes nodes;
   std::vector<uint32_t> order;
 };
 
@@ -51,6 +54,6 @@ BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>&
 
 /// Collapses a binary hierarchy into kBvhWidth-wide nodes (root first) by repeatedly opening
 /// the inner child with the largest surface area; leaves keep their `order` ranges.
-std::vector<BvhWideNode> collapse_to_wide(const std::vector<BvhNode>& binary);
+BvhWideNodes collapse_to_wide(const BvhNodes& binary);
 
 }  // namespace mjray

@@ -214,14 +214,18 @@ TEST(BvhOracle, AgreesWithBruteForceOnALargerMesh) {
 
 TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
   MJRAY_REQUIRE_SHARED(shared);
-  const PrimitiveSet world = obj_world(shared / "models/medium/dragon_vrip_res3.obj");
-  const Bvh serial(world, 1), parallel(world, 2);
-  ASSERT_EQ(serial.nodes().size(), parallel.nodes().size());
-  EXPECT_EQ(std::memcmp(serial.nodes().data(), parallel.nodes().data(),
-                        serial.nodes().size() * sizeof(BvhWideNode)), 0);
-  ASSERT_EQ(serial.leaf_primitives().size(), parallel.leaf_primitives().size());
-  for (size_t i = 0; i < serial.leaf_primitives().size(); ++i)
-    ASSERT_EQ(serial.leaf_primitives()[i].prim, parallel.leaf_primitives()[i].prim) << i;
+  // 203k triangles: large enough for forked subtrees and for binning shared among threads.
+  const PrimitiveSet world = obj_world(shared / "models/large/dragon_vrip_res2.obj");
+  const Bvh serial(world, 1);
+  for (int threads : {2, 3, 8}) {
+    const Bvh parallel(world, threads);
+    ASSERT_EQ(serial.nodes().size(), parallel.nodes().size()) << threads;
+    EXPECT_EQ(std::memcmp(serial.nodes().data(), parallel.nodes().data(),
+                          serial.nodes().size() * sizeof(BvhWideNode)), 0) << threads;
+    ASSERT_EQ(serial.leaf_primitives().size(), parallel.leaf_primitives().size()) << threads;
+    for (size_t i = 0; i < serial.leaf_primitives().size(); ++i)
+      ASSERT_EQ(serial.leaf_primitives()[i].prim, parallel.leaf_primitives()[i].prim) << threads << ": " << i;
+  }
 }
 
 TEST(BvhBuild, MemoryStaysWithinBudgetPerTriangle) {
