@@ -51,7 +51,11 @@ RenderWatcher::RenderWatcher(ImageRender& render, std::filesystem::path image_pa
 }
 
 RenderWatcher::~RenderWatcher() {
-  done_ = true;
+  {
+    std::lock_guard lock(wake_mutex_);
+    done_ = true;
+  }
+  wake_.notify_one();
   thread_.join();
 }
 
@@ -60,8 +64,11 @@ void RenderWatcher::loop() {
   const auto start = Clock::now();
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto last_snapshot = start, last_report = start, last_share = start;
-  while (!done_) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  for (;;) {
+    {
+      std::unique_lock lock(wake_mutex_);
+      if (wake_.wait_for(lock, std::chrono::milliseconds(50), [&] { return done_.load(); })) break;
+    }
     if (interrupted()) render_.request_stop();
     const double elapsed = seconds_since(start);
     estimate_.update(render_.progress(), elapsed);

@@ -3,7 +3,9 @@
 /// image with the finished tiles every few seconds, and turns SIGINT/SIGTERM into a stop.
 
 #include <atomic>
+#include <condition_variable>
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <thread>
 
@@ -45,6 +47,9 @@ class RenderWatcher {
   WatchOptions options_;
   bool terminal_;
   std::atomic<bool> done_{false};
+  // Wakes the watcher the moment the render ends, not at its next tick.
+  std::mutex wake_mutex_;
+  std::condition_variable wake_;
   std::atomic<bool> finished_{false};
   ProgressEstimate estimate_;
   int last_percent_ = -1;      // of the last line without a terminal
