@@ -4,7 +4,6 @@
 #include <bit>
 #include <cmath>
 #include <deque>
-#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -476,9 +475,6 @@ class Collapser {
       kids[size_t(n)] = kid;
       const BvhNode& node = binary_[kid];
       area[size_t(n++)] = node.count > 0 ? -1 : surface_area(node);
-      // The second child, if it is opened or collapsed later, is far away in memory: ask for
-      // it now so that these loads overlap rather than wait one after another.
-      if (node.count == 0) __builtin_prefetch(&binary_[node.offset]);
     };
     if (is_leaf(b)) {
       add_kid(b);  // a leaf root becomes the only child of a wide root
