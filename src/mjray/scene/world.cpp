@@ -60,7 +60,7 @@ SurfaceInteraction World::shade(const Ray& ray, const Hit& hit) const {
     }
     si.material = mesh.material;
     si.prim = hit.prim;
-    if constexpr (!kFull) return si;
+    if (!kFull || !reads_texture(si.material)) return si;
     if (c[0].uv >= 0 && c[1].uv >= 0 && c[2].uv >= 0) {
       const Point2 &t0 = mesh.uvs[size_t(c[0].uv)], &t1 = mesh.uvs[size_t(c[1].uv)], &t2 = mesh.uvs[size_t(c[2].uv)];
       si.uv = {b0 * t0.u + hit.u * t1.u + hit.v * t2.u, b0 * t0.v + hit.u * t1.v + hit.v * t2.v};
@@ -80,7 +80,7 @@ SurfaceInteraction World::shade(const Ray& ray, const Hit& hit) const {
   si.shading_normal = si.geometric_normal;
   si.material = s.material;
   si.prim = hit.prim;
-  if constexpr (!kFull) return si;
+  if (!kFull || !reads_texture(si.material)) return si;
   si.uv = std::visit([&](const auto& shape) { return shape.uv(surface.point); }, instance.shape);
   si.object_point = s.node_from_object(surface.point);
   return si;

@@ -49,7 +49,8 @@ class World {
   Background background;
 
   uint32_t primitive_count() const { return primitives.size(); }
-  /// Shading data at a hit returned for `ray`.
+  /// Shading data at a hit returned for `ray`. Texture coordinates and the object-space
+  /// point are filled in only where the material has a texture, the one thing that reads them.
   SurfaceInteraction interaction(const Ray& ray, const Hit& hit) const;
   /// Only the material and the normals of interaction(ray, hit) (the same values): what a
   /// shadow ray crossing a surface asks.
@@ -59,6 +60,7 @@ class World {
 
  private:
   const WorldMesh& mesh_of(uint32_t triangle) const;
+  bool reads_texture(uint32_t material) const { return phong_of(materials[material]).texture != nullptr; }
   /// interaction (kFull) or crossing.
   template <bool kFull>
   SurfaceInteraction shade(const Ray& ray, const Hit& hit) const;
