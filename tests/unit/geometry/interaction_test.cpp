@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "mjray/geometry/box.h"
 #include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
@@ -9,15 +11,22 @@
 namespace mjray {
 namespace {
 
+/// The default material with a texture: shading computes texture coordinates only for such.
+Material textured_material() {
+  PhongMaterial m = std::get<PhongMaterial>(default_material());
+  m.texture = std::make_shared<const Texture>(CheckerboardTexture{{1, 1, 1}, {0, 0, 0}, 1});
+  return m;
+}
+
 /// One triangle with distinct vertex normals and UVs, placed by a transform.
-World triangle_world(const Transform& placement) {
+World triangle_world(const Transform& placement, const Material& material = textured_material()) {
   TriangleMesh m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   m.normals = {normalize(Normal3(0, 0, 1)), normalize(Normal3(1, 0, 1)), normalize(Normal3(0, 1, 1))};
   m.uvs = {{0.1f, 0.2f}, {0.9f, 0.3f}, {0.4f, 0.8f}};
   m.triangles = {{MeshCorner{0, 0, 0}, MeshCorner{1, 1, 1}, MeshCorner{2, 2, 2}}};
   RenderJob job;
-  job.root = test::mesh(m, default_material(), placement);
+  job.root = test::mesh(m, material, placement);
   return flatten(job);
 }
 
@@ -74,9 +83,22 @@ TEST(Interaction, CubeFacesMapRightAndUpAsSeenFromOutsideToUv) {
   EXPECT_EQ(unit_cube_normal({0, 0.6f, 0.2f}), Normal3(-1, 0, 0));
 }
 
+TEST(Interaction, WithoutATextureTheHitIsTheSameButHasNoTextureCoordinates) {
+  const World textured = triangle_world({}), plain = triangle_world({}, default_material());
+  const Ray ray{{0, 0, 5}, {0, 0, -1}};
+  const SurfaceInteraction a = textured.interaction(ray, Hit{5, 0, 0.25f, 0.5f});
+  const SurfaceInteraction b = plain.interaction(ray, Hit{5, 0, 0.25f, 0.5f});
+  EXPECT_EQ(a.point, b.point);
+  EXPECT_EQ(a.point_error, b.point_error);
+  EXPECT_EQ(a.geometric_normal, b.geometric_normal);
+  EXPECT_EQ(a.shading_normal, b.shading_normal);
+  EXPECT_NE(a.uv, (Point2{}));
+  EXPECT_EQ(b.uv, (Point2{}));  // never read: no texture
+}
+
 TEST(Interaction, SphereHitGivesSphericalUvAndOutwardNormal) {
   RenderJob job;
-  job.root = test::sphere({2, 0, 0}, 3);
+  job.root = test::sphere({2, 0, 0}, 3, textured_material());
   const World world = flatten(job);
   // Hit the top of the sphere from above: θ = 0 → v = 1; the normal points up.
   const Ray ray{{2, 10, 0}, {0, -1, 0}};
