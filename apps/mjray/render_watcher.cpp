@@ -67,7 +67,7 @@ void RenderWatcher::loop() {
   for (;;) {
     {
       std::unique_lock lock(wake_mutex_);
-      if (wake_.wait_for(lock, std::chrono::milliseconds(50), [&] { return done_.load(); })) break;
+      if (wake_.wait_for(lock, std::chrono::milliseconds(50), [&] { return done_; })) break;
     }
     if (interrupted()) render_.request_stop();
     const double elapsed = seconds_since(start);

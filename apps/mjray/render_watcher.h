@@ -46,10 +46,10 @@ class RenderWatcher {
   std::filesystem::path image_path_;
   WatchOptions options_;
   bool terminal_;
-  std::atomic<bool> done_{false};
-  // Wakes the watcher the moment the render ends, not at its next tick.
+  // Set when the render ends; wakes the watcher at once, not at its next tick.
   std::mutex wake_mutex_;
   std::condition_variable wake_;
+  bool done_ = false;  // guarded by wake_mutex_
   std::atomic<bool> finished_{false};
   ProgressEstimate estimate_;
   int last_percent_ = -1;      // of the last line without a terminal

@@ -8,7 +8,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <utility>
 
 #if defined(__SSE2__)
@@ -111,10 +110,8 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
   leaf_prims_.resize(built.order.size());
   // The copy in chunks on all the build's threads.
   constexpr int kChunks = 64;
-  const size_t count = built.order.size();
-  const int workers = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  parallel_for(kChunks, workers, [&](int chunk, int) {
-    for (size_t i = count * size_t(chunk) / kChunks, end = count * size_t(chunk + 1) / kChunks; i < end; ++i) {
+  parallel_for(kChunks, resolve_thread_count(threads), [&](int chunk, int) {
+    for (auto [i, end] = chunk_range(built.order.size(), chunk, kChunks); i < end; ++i) {
       LeafPrimitive& leaf = leaf_prims_[i];
       leaf.prim = built.order[i];
       if (prims.is_triangle(leaf.prim)) {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <deque>
 #include <mutex>
-#include <thread>
 
 #include "mjray/core/fork_join.h"
 #include "mjray/core/parallel_for.h"
@@ -149,17 +148,15 @@ struct Binner {
 // extent; made in chunks on `threads` threads.
 BuildRefs make_refs(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, int threads,
                     Extent& extent) {
-  constexpr uint32_t kChunks = 64;
+  constexpr int kChunks = 64;
   BuildRefs refs(count);
   std::array<uint32_t, kChunks> kept{};  // refs made by each chunk, at its start
   std::array<Extent, kChunks> extents;
-  parallel_for(int(kChunks), threads, [&](int c, int) {
-    const uint32_t chunk = uint32_t(c);
-    const uint32_t begin = uint32_t(uint64_t(count) * chunk / kChunks);
-    const uint32_t end = uint32_t(uint64_t(count) * (chunk + 1) / kChunks);
-    uint32_t at = begin;
+  parallel_for(kChunks, threads, [&](int chunk, int) {
+    const auto [begin, end] = chunk_range(count, chunk, kChunks);
+    uint32_t at = uint32_t(begin);
     Extent local;  // not extents[chunk], whose cache line other threads write too
-    for (uint32_t prim = begin; prim < end; ++prim) {
+    for (uint32_t prim = uint32_t(begin); prim < end; ++prim) {
       const Bounds3 b = bounds_of(prim);
       if (!is_finite(b)) continue;
       BuildRef& r = refs[at++];
@@ -168,17 +165,18 @@ BuildRefs make_refs(uint32_t count, const std::function<Bounds3(uint32_t)>& boun
       local.box.grow(r);
       grow_by_centroid(local.centroids, r);
     }
-    extents[chunk] = local;
-    kept[chunk] = at - begin;
+    extents[size_t(chunk)] = local;
+    kept[size_t(chunk)] = at - uint32_t(begin);
   });
   // Close the gaps left by primitives without finite bounds (usually there are none).
   uint32_t size = 0;
-  for (uint32_t chunk = 0; chunk < kChunks; ++chunk) {
-    const uint32_t begin = uint32_t(uint64_t(count) * chunk / kChunks);
-    if (size != begin) std::copy_n(refs.begin() + begin, kept[chunk], refs.begin() + size);
-    size += kept[chunk];
-    extent.box.grow(extents[chunk].box);
-    extent.centroids.grow(extents[chunk].centroids);
+  for (int chunk = 0; chunk < kChunks; ++chunk) {
+    const size_t begin = chunk_range(count, chunk, kChunks).begin;
+    const size_t made = kept[size_t(chunk)];
+    if (size != begin) std::copy_n(refs.begin() + long(begin), made, refs.begin() + size);
+    size += uint32_t(made);
+    extent.box.grow(extents[size_t(chunk)].box);
+    extent.centroids.grow(extents[size_t(chunk)].centroids);
   }
   refs.resize(size);
   return refs;
@@ -441,7 +439,7 @@ BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions&
 
 BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
                          const BvhBuildOptions& options) {
-  const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = resolve_thread_count(options.threads);
   Extent all;
   BuildRefs refs = make_refs(count, bounds_of, threads, all);
   ForkJoinPool pool(threads);

@@ -10,6 +10,20 @@
 
 namespace mjray {
 
+/// The number of worker threads `requested` means on this machine (0 = all cores).
+inline int resolve_thread_count(int requested) {
+  if (requested > 0) return requested;
+  return int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+/// The part [begin, end) of [0, count) that chunk `chunk` of `chunks` equal chunks covers.
+struct ChunkRange {
+  size_t begin, end;
+};
+inline ChunkRange chunk_range(size_t count, int chunk, int chunks) {
+  return {count * size_t(chunk) / size_t(chunks), count * size_t(chunk + 1) / size_t(chunks)};
+}
+
 /// Calls body(index, thread) for every index in [0, count), on `threads` threads (the caller's
 /// thread is thread 0).
 template <class Body>

@@ -1,16 +1,10 @@
 #include "mjray/render/tile_render.h"
 
 #include <algorithm>
-#include <thread>
 
 #include "mjray/core/parallel_for.h"
 
 namespace mjray {
-
-int resolve_thread_count(int requested) {
-  if (requested > 0) return requested;
-  return std::max(1u, std::thread::hardware_concurrency());
-}
 
 TileRender::TileRender(const ImageSampler& sampler, const TileLayout& layout, int threads)
     : sampler_(sampler), layout_(layout), thread_count_(std::clamp(resolve_thread_count(threads), 1, std::max(1, layout.count()))) {

@@ -11,6 +11,7 @@
 #include <stop_token>
 #include <vector>
 
+#include "mjray/core/parallel_for.h"
 #include "mjray/render/image_sampler.h"
 #include "mjray/render/tile_executor.h"
 
@@ -50,8 +51,5 @@ class TileRender final : public TileExecutor {
   std::vector<TraceState> states_;                           // one per thread
   std::unique_ptr<std::atomic<uint64_t>[]> published_rays_;  // per thread, for live rays/s
 };
-
-/// The number of worker threads `requested` means on this machine (0 = all cores).
-int resolve_thread_count(int requested);
 
 }  // namespace mjray
