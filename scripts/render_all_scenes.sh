@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Renders every CS 488 corpus scene (../shared/corpus), every shipped scene (with the
 # options its header names) and a preview of each animation with the mjray binary BINARY into
-# OUTDIR, and writes the md5 of every image to OUTDIR.md5. Compare two builds (e.g. before and
-# after a refactoring that must not change images):
+# OUTDIR, and writes the md5 of every image's pixels (decoded by ffmpeg, so neither the PNG
+# encoder's settings nor the metadata's paths count) to OUTDIR.md5. Compare two builds (e.g.
+# before and after a refactoring that must not change images):
 #   scripts/render_all_scenes.sh /tmp/old/mjray /tmp/before && scripts/render_all_scenes.sh build/mjray /tmp/after
 #   diff /tmp/before.md5 /tmp/after.md5
 set -uo pipefail
@@ -32,6 +33,7 @@ for s in scenes/animation/*.lua; do
   mkdir -p "$out/$name"
   "$bin" --quiet -s 2 --size 160x90 --frames 1-96:8 --outdir "$out/$name" "$s" 2>"$out/$name.log" || { echo "failed: $s"; status=1; }
 done
-(cd "$out" && find . -name '*.png' | sort | xargs md5sum) > "$out.md5"
+pixels_md5() { ffmpeg -loglevel error -i "$1" -f rawvideo - | md5sum | sed "s#-\$#$1#"; }
+(cd "$out" && for f in $(find . -name '*.png' | sort); do pixels_md5 "$f"; done) > "$out.md5"
 echo "$(wc -l < "$out.md5") images; md5s in $out.md5"
 exit $status

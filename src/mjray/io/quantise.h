@@ -28,7 +28,8 @@ inline uint8_t to_8bit(float linear, OutputGamma gamma) {
   if (!(linear > 0.0f)) return 0;  // also NaN
   if (linear >= 1.0f) return 255;
   const float v = gamma == OutputGamma::kSrgb ? srgb_encode(linear) : linear;
-  return uint8_t(std::min(255.0f, std::floor(v * 255.0f + 0.5f)));
+  // v > 0, so truncation is floor (and needs no libm call without SSE4.1).
+  return uint8_t(std::min(255, int(v * 255.0f + 0.5f)));
 }
 
 /// Quantises a linear value to 16 bits, as to_8bit with 65535 steps.

@@ -1,6 +1,7 @@
 #include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -121,6 +122,24 @@ TEST(ImageWriterQuantise, LinearEndpointsAndRounding) {
   EXPECT_EQ(to_8bit(0.75f, OutputGamma::kLinear), 191);
   EXPECT_EQ(to_8bit(code(1), OutputGamma::kLinear), 1);
   EXPECT_EQ(to_8bit(code(254), OutputGamma::kLinear), 254);
+}
+
+TEST(ImageWriterQuantise, EveryValueRoundsAsTheFormulaSays) {
+  // The documented rule, v·255 + 0.5 rounded down in float, against the quantiser's own
+  // arithmetic: on a fine sweep of [0, 1] and one float either side of every code's edge.
+  const auto formula = [](float v) { return int(std::min(255.0f, std::floor(v * 255.0f + 0.5f))); };
+  for (const OutputGamma gamma : {OutputGamma::kLinear, OutputGamma::kSrgb}) {
+    const auto encoded = [&](float linear) { return gamma == OutputGamma::kSrgb ? srgb_encode(linear) : linear; };
+    for (int i = 1; i < 1 << 20; ++i) {
+      const float linear = float(i) / float(1 << 20);
+      ASSERT_EQ(to_8bit(linear, gamma), formula(encoded(linear))) << linear;
+    }
+  }
+  for (int code_value = 0; code_value < 255; ++code_value) {
+    const float edge = (float(code_value) + 0.5f) / 255.0f;
+    for (const float v : {std::nextafter(edge, 0.0f), edge, std::nextafter(edge, 1.0f)})
+      if (v > 0 && v < 1) EXPECT_EQ(to_8bit(v, OutputGamma::kLinear), formula(v)) << v;
+  }
 }
 
 TEST(ImageWriterQuantise, ClampsOutOfRangeAndNaN) {
