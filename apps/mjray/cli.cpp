@@ -326,6 +326,8 @@ void Parser::parse(const std::vector<std::string>& args) {
   if (cl_.output && cl_.outdir) throw UsageError("--output and --outdir cannot be used together");
   if (!cl_.watch && (cl_.port || cl_.listen)) throw UsageError(std::string(cl_.port ? "--port" : "--listen") + " needs --watch");
   if (cl_.watch && cl_.resume) throw UsageError("--watch and --resume cannot be used together (finish the render with --resume first)");
+  if (cl_.watch && cl_.video) throw UsageError("--watch and --video cannot be used together (make the video without --watch)");
+  if (cl_.watch && cl_.crop) throw UsageError("--watch and --crop cannot be used together (the preview shows whole frames)");
 }
 
 /// Options that change nothing with the others given, each named once.

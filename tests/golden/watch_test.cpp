@@ -108,6 +108,26 @@ TEST_F(GoldenWatch, ServesThePageAPngOfTheRightSizeAndTheStatisticsAsJson) {
   }
 }
 
+TEST_F(GoldenWatch, FramesSelectsTheRendersThePageShowsAndWrites) {
+  std::string script = sphere_scene("{0.8, 0.2, 0.2}");
+  for (const char* name : {"b", "c"}) {
+    const std::string call = "gr.render(root, 'out.png', 96, 72";
+    script += script.substr(script.find(call)).replace(0, call.size(), "gr.render(root, '" + std::string(name) + ".png', 48, 36");
+  }
+  write("scene.lua", script);
+  auto w = watch({"--frames", "2-3"});
+  const auto done = w->wait_until_done();
+  ASSERT_TRUE(done) << w->process().log();
+  EXPECT_NE(done->json.find("\"image\": \"b.png\", \"number\": 1, \"width\": 48, \"height\": 36"), std::string::npos)
+      << done->json;
+  EXPECT_NE(done->json.find("\"image\": \"c.png\", \"number\": 2"), std::string::npos) << done->json;
+  EXPECT_EQ(done->json.find("out.png"), std::string::npos) << done->json;
+  EXPECT_EQ(decoded(w->frame_png(2)).width(), 48);
+  EXPECT_TRUE(fs::exists(dir_ / "b.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "c.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
 TEST_F(GoldenWatch, SavingTheScriptGivesANewRenderWithinASecondAndADifferentImage) {
   write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
   auto w = watch();

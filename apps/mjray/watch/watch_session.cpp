@@ -13,6 +13,7 @@
 #include "progressive_render.h"
 #include "render_watcher.h"
 #include "mjray/job/job_outputs.h"
+#include "mjray/job/job_view.h"
 #include "mjray/lua/scene_loader.h"
 
 namespace mjray {
@@ -57,11 +58,13 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
     for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (!cl.quiet)
       for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
-    for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+    const std::vector<size_t> jobs = selected_jobs(scene, options.frames);
+    check_job_views(scene, jobs, options);
+    for (const auto& w : check_outputs(scene, options.outputs, jobs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
 
     std::vector<FrameDescription> frames;
-    for (size_t i = 0; i < scene.jobs.size(); ++i)
+    for (const size_t i : jobs)
       frames.push_back({output_path(scene, i, options.outputs).filename().string(), scene.jobs[i].width,
                         scene.jobs[i].height});
     page.set_frames(frames);
@@ -73,10 +76,10 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
     run.quiet = cl.quiet;
     run.print_stats = cl.print_stats;
     run.snapshot_interval_seconds = 0;  // the page shows the progress; the file gets the result
-    for (size_t i = 0; i < scene.jobs.size(); ++i) {
-      run.run_render = ProgressiveRender(page, i, options.render, [&files] { return files.changed(); });
-      const auto stats = render_job_locally(scene, i, options, fingerprints, run, parse_seconds);
-      page.finish_frame(i, *stats);
+    for (size_t frame = 0; frame < jobs.size(); ++frame) {
+      run.run_render = ProgressiveRender(page, frame, options.render, [&files] { return files.changed(); });
+      const auto stats = render_job_locally(scene, jobs[frame], options, fingerprints, run, parse_seconds);
+      page.finish_frame(frame, *stats);
       statistics.push_back(*stats);
       if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
     }

@@ -35,6 +35,10 @@ TEST(WatchOptions, MistakesAreUsageErrorsThatSayWhatIsWrong) {
             "--listen expects an IP address such as 127.0.0.1, 0.0.0.0 or ::1, got 'example.com'");
   EXPECT_NE(message({"--watch", "--resume", "scene.lua"}).find("--watch and --resume cannot be used together"),
             std::string::npos);
+  EXPECT_NE(message({"--watch", "--video", "out.mp4", "scene.lua"}).find("--watch and --video cannot be used together"),
+            std::string::npos);
+  EXPECT_NE(message({"--watch", "--crop", "0,0,8,8", "scene.lua"}).find("--watch and --crop cannot be used together"),
+            std::string::npos);
 }
 
 TEST(WatchOptions, HelpDocumentsThemWithTheDefaultPort) {
