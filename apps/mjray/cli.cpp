@@ -334,7 +334,10 @@ void Parser::parse(const std::vector<std::string>& args) {
 std::vector<std::string> ignored_options(const CommandLine& cl) {
   std::vector<std::string> warnings;
   if (cl.fps != 24 && !cl.video) warnings.push_back("--fps has no effect without --video");
-  if (cl.accel.empty() || cl.accel == "grid") return warnings;
+  if (cl.accel.empty() || cl.accel == "grid") {
+    if (cl.optimal_grid && cl.grid_size) warnings.push_back("-g has no effect with -o (-o chooses the grid's size itself)");
+    return warnings;
+  }
   if (cl.grid_size) warnings.push_back("-g has no effect with --accel " + cl.accel + " (it sizes the grid of --accel grid)");
   if (cl.optimal_grid) warnings.push_back("-o has no effect with --accel " + cl.accel + " (it sizes the grid of --accel grid)");
   return warnings;

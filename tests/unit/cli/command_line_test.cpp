@@ -82,5 +82,15 @@ TEST(CommandLine, FpsWithoutAVideoIsNamedAsDoingNothing) {
   EXPECT_EQ(parse({"--fps", "12"}).warnings, std::vector<std::string>{"--fps has no effect without --video"});
 }
 
+TEST(CommandLine, OptimalGridOverridesAGridSizeAndSaysSo) {
+  for (const auto& args : {std::vector<std::string>{"-o", "-g", "20"}, std::vector<std::string>{"-g", "20", "-o"}}) {
+    const CommandLine cl = parse(args);
+    EXPECT_EQ(cl.warnings, std::vector<std::string>{"-g has no effect with -o (-o chooses the grid's size itself)"});
+    const JobOptions o = job_options(cl);
+    EXPECT_EQ(o.accel.kind, "grid");
+    EXPECT_EQ(o.accel.grid_size, 0);  // the optimal size
+  }
+}
+
 }  // namespace
 }  // namespace mjray
