@@ -19,6 +19,7 @@
 #include "support/scene_builder.h"
 #include "support/test_job.h"
 #include "support/scratch_files.h"
+#include "support/spawn.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -161,14 +162,9 @@ TEST(GoldenRender, RealSigintKeepsThePartialImageAndResumeFinishesItIdentically)
 
   // Start a slow brute-force render and interrupt it after a moment: it must stop with 130,
   // leaving a partial image and a state file.
-  const pid_t pid = fork();
+  const pid_t pid =
+      test::spawn({mjray, "--quiet", "--accel", "none", "-j", "1", "--output", (dir / "slow.png").string(), scene.string()});
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const std::string out = (dir / "slow.png").string();
-    execl(mjray.c_str(), mjray.c_str(), "--quiet", "--accel", "none", "-j", "1", "--output", out.c_str(),
-          scene.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
   std::this_thread::sleep_for(std::chrono::milliseconds(700));
   kill(pid, SIGINT);
   int status = 0;

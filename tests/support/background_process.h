@@ -11,11 +11,11 @@
 #include <thread>
 #include <vector>
 
-#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "support/scratch_files.h"
+#include "support/spawn.h"
 
 namespace mjray::test {
 
@@ -23,24 +23,10 @@ namespace mjray::test {
 class BackgroundProcess {
  public:
   /// Starts argv[0] with `argv`, its stdout and stderr appended to `log`.
-  BackgroundProcess(const std::vector<std::string>& argv, const std::filesystem::path& log) : log_(log) {
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
-      ::execv(args[0], args.data());
-      ::_exit(127);
-    }
-  }
+  BackgroundProcess(const std::vector<std::string>& argv, const std::filesystem::path& log)
+      : log_(log), pid_(spawn(argv, [path = log.c_str()] { log_output_to(path); })) {}
   ~BackgroundProcess() {
-    if (running()) {
-      ::kill(pid_, SIGKILL);
-      ::waitpid(pid_, nullptr, 0);
-    }
+    if (running()) kill_and_reap(pid_);
   }
   BackgroundProcess(const BackgroundProcess&) = delete;
   BackgroundProcess& operator=(const BackgroundProcess&) = delete;
@@ -54,7 +40,7 @@ class BackgroundProcess {
     while (!exit_code_ && pid_ > 0) {
       int status = 0;
       if (::waitpid(pid_, &status, WNOHANG) == pid_)
-        exit_code_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        exit_code_ = exit_code_of(status);
       else if (std::chrono::steady_clock::now() > end) break;
       else std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }

@@ -5,31 +5,24 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "support/spawn.h"
+
 namespace mjray::test {
 
 ChildProcess::ChildProcess(const std::vector<std::string>& argv) {
   int fds[2];
   if (pipe(fds) != 0) return;
-  pid_ = fork();
-  if (pid_ == 0) {
+  pid_ = spawn(argv, [&] {
     dup2(fds[1], 2);
     close(fds[0]);
     close(fds[1]);
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    execv(args[0], args.data());
-    _exit(127);
-  }
+  });
   close(fds[1]);
   err_ = fdopen(fds[0], "r");
 }
 
 ChildProcess::~ChildProcess() {
-  if (!reaped_ && pid_ > 0) {
-    kill(pid_, SIGKILL);
-    waitpid(pid_, nullptr, 0);
-  }
+  if (!reaped_) kill_and_reap(pid_);
   if (err_) std::fclose(err_);
 }
 
@@ -50,7 +43,7 @@ int ChildProcess::exit_code() {
   int status = 0;
   waitpid(pid_, &status, 0);
   reaped_ = true;
-  code_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  code_ = exit_code_of(status);
   return code_;
 }
 

@@ -23,7 +23,8 @@ class ChildProcess {
   bool wait_for(const std::string& text);
   /// Sends `signal` to the process.
   void interrupt(int signal = SIGINT);
-  /// Reads the rest of stderr, waits for the exit and returns its code (-1 when killed).
+  /// Reads the rest of stderr, waits for the exit and returns its code (128 + N when signal
+  /// N ended it).
   int exit_code();
   pid_t pid() const { return pid_; }
   /// What stderr has said so far.

@@ -17,6 +17,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "support/spawn.h"
+
 namespace mjray::test {
 
 /// The bytes that base64 `text` encodes (characters outside the alphabet are skipped).
@@ -67,21 +69,13 @@ class ChromiumPage {
         "--force-device-scale-factor=1", "--force-color-profile=srgb", "--user-data-dir=" + profile.string(),
         "--window-size=" + std::to_string(width) + "," + std::to_string(height), "--remote-debugging-pipe",
         "about:blank"};
-    std::vector<char*> args;
-    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
+    pid_ = spawn(argv, [&, path = log.c_str()] {
+      log_output_to(path);
       // fd 3 and 4 may be among the pipes' own descriptors: move those out of the way first.
       const int in = ::fcntl(to_browser[0], F_DUPFD, 10), out = ::fcntl(from_browser[1], F_DUPFD, 10);
       ::dup2(in, 3);
       ::dup2(out, 4);
-      ::execv(args[0], args.data());
-      ::_exit(127);
-    }
+    });
     ::close(to_browser[0]);
     ::close(from_browser[1]);
     write_fd_ = to_browser[1];
@@ -108,8 +102,7 @@ class ChromiumPage {
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (::waitpid(pid_, nullptr, WNOHANG) == 0) {
       if (std::chrono::steady_clock::now() > end) {
-        ::kill(pid_, SIGKILL);
-        ::waitpid(pid_, nullptr, 0);
+        kill_and_reap(pid_);
         break;
       }
       ::usleep(20000);
