@@ -14,6 +14,8 @@
 
 #include <arpa/inet.h>
 
+#include "mjray/core/parallel_for.h"
+
 namespace mjray {
 
 namespace {
@@ -439,6 +441,7 @@ JobOptions job_options(const CommandLine& cl) {
   o.frames = cl.frames;
   o.outputs.encoding.bit_depth = cl.bit_depth;
   o.outputs.encoding.jpeg_quality = cl.jpeg_quality;
+  o.outputs.encoding.threads = resolve_thread_count(cl.threads);
   return o;
 }
 

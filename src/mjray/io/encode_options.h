@@ -18,6 +18,8 @@ struct EncodeOptions {
   OutputGamma gamma = OutputGamma::kLinear;  ///< integer formats only
   int bit_depth = 8;                         ///< bits per channel where the format offers a choice
   int jpeg_quality = 90;                     ///< JPEG only: 1 (smallest) to 100 (best)
+  /// Threads that may share the work (PNG's compression); the bytes never depend on it.
+  int threads = 1;
   /// Seconds the render took, for formats whose header has a place for it (EXR). Integer
   /// formats leave it out, so that the same render always gives the same bytes.
   std::optional<double> render_seconds{};

@@ -12,11 +12,14 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include "mjray/core/error.h"
+#include "mjray/io/png_codec.h"
+#include "support/scratch_files.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -173,6 +176,70 @@ TEST(ImageWriterFormat, PngRoundTripIsExact) {
   EXPECT_EQ(std::vector<uint8_t>(bytes.begin(), bytes.begin() + 8),
             (std::vector<uint8_t>{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}));
   expect_same_pixels(image, read_image(path));
+}
+
+/// The chunks of a PNG file after its signature: (type, data), each CRC checked.
+std::vector<std::pair<std::string, std::string>> png_chunks(const std::string& png) {
+  std::vector<std::pair<std::string, std::string>> chunks;
+  const auto word = [&](size_t at) {
+    return uint32_t(uint8_t(png[at])) << 24 | uint32_t(uint8_t(png[at + 1])) << 16 | uint32_t(uint8_t(png[at + 2])) << 8 |
+           uint32_t(uint8_t(png[at + 3]));
+  };
+  for (size_t at = 8; at + 12 <= png.size();) {
+    const uint32_t length = word(at);
+    EXPECT_LE(at + 12 + length, png.size());
+    const uint32_t crc = uint32_t(crc32(0, reinterpret_cast<const Bytef*>(png.data() + at + 4), length + 4));
+    EXPECT_EQ(word(at + 8 + length), crc) << png.substr(at + 4, 4);
+    chunks.emplace_back(png.substr(at + 4, 4), png.substr(at + 8, length));
+    at += 12 + length;
+  }
+  return chunks;
+}
+
+TEST(ImageWriterFormat, PngChunksAreTheHeaderTheColourTagTheTextTheDataAndTheEnd) {
+  EncodeOptions options;
+  options.gamma = OutputGamma::kSrgb;
+  options.metadata = {{"mjray job", "scene a.lua\n-s=4"}, {"Comment", ""}};
+  const std::string png = encode_png(noise_image(300, 2), options);
+  ASSERT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n");
+  const auto chunks = png_chunks(png);
+  ASSERT_EQ(chunks.size(), 6u);
+  EXPECT_EQ(chunks[0].first, "IHDR");
+  // 300 × 2, 8 bits, RGB, deflate, the standard filters, not interlaced.
+  EXPECT_EQ(chunks[0].second, std::string("\0\0\x01\x2c\0\0\0\x02\x08\x02\0\0\0", 13));
+  EXPECT_EQ(chunks[1], (std::pair<std::string, std::string>{"sRGB", std::string(1, '\0')}));
+  EXPECT_EQ(chunks[2], (std::pair<std::string, std::string>{"tEXt", std::string("mjray job\0scene a.lua\n-s=4", 26)}));
+  EXPECT_EQ(chunks[3], (std::pair<std::string, std::string>{"tEXt", std::string("Comment\0", 8)}));
+  EXPECT_EQ(chunks[4].first, "IDAT");
+  EXPECT_EQ(chunks[5], (std::pair<std::string, std::string>{"IEND", ""}));
+  // Linear output carries no colour chunk.
+  options.gamma = OutputGamma::kLinear;
+  for (const auto& [type, data] : png_chunks(encode_png(noise_image(3, 3), options))) EXPECT_NE(type, "sRGB");
+}
+
+TEST(ImageWriterFormat, PngBytesDoNotDependOnTheThreadsThatCompressThem) {
+  // Big enough for several strips of compression; 16 bits doubles the rows' bytes.
+  const Image image = noise_image(700, 300);
+  for (const int bits : {8, 16}) {
+    EncodeOptions options;
+    options.bit_depth = bits;
+    const std::string serial = encode_png(image, options);
+    for (const int threads : {2, 3, 8}) {
+      options.threads = threads;
+      EXPECT_EQ(encode_png(image, options), serial) << bits << " bits, " << threads << " threads";
+    }
+    const fs::path path = test::make_temp_dir("png-threads") / "out.png";
+    test::write_file(path, serial);
+    expect_same_pixels(image, read_image(path));
+  }
+}
+
+TEST(ImageWriterFormat, PngRefusesATextKeyItCannotStore) {
+  EncodeOptions options;
+  for (const std::string& key : {std::string(), std::string(80, 'k'), std::string("a\0b", 3)}) {
+    options.metadata = {{key, "value"}};
+    EXPECT_THROW(encode_png(distinct_image(), options), OutputError) << key.size();
+  }
 }
 
 TEST(ImageWriterFormat, PpmRoundTripIsExact) {
