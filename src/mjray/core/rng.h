@@ -16,6 +16,16 @@ constexpr uint64_t mix64(uint64_t x) {
   return x;
 }
 
+/// mix64 of the first draw indices, the half of every draw that is the same in all streams.
+struct DrawIndexHashes {
+  static constexpr uint64_t kCount = 512;
+  uint64_t of[kCount];
+  constexpr DrawIndexHashes() : of() {
+    for (uint64_t i = 0; i < kCount; ++i) of[i] = mix64(i);
+  }
+};
+inline constexpr DrawIndexHashes kDrawIndexHashes;
+
 /// The random stream of one sample of one pixel; draw i is hash(key, i).
 class RandomStream {
  public:
@@ -27,7 +37,9 @@ class RandomStream {
 
   /// The next uniform value in [0, 1).
   constexpr float uniform() {
-    const uint64_t bits = mix64(key_ ^ mix64(++counter_));
+    ++counter_;
+    const uint64_t index_hash = counter_ < DrawIndexHashes::kCount ? kDrawIndexHashes.of[counter_] : mix64(counter_);
+    const uint64_t bits = mix64(key_ ^ index_hash);
     return float(bits >> 40) * 0x1p-24f;  // 24 random bits: exactly representable, < 1
   }
 
