@@ -94,6 +94,20 @@ void filtered_row(const Image& image, int y, const EncodeOptions& options, uint8
   for (size_t i = size_t(next - out); i-- > pixel_bytes;) out[i] = uint8_t(out[i] - out[i - pixel_bytes]);
 }
 
+/// The image's rows, quantised and filtered on `options.threads` threads, as one zlib stream.
+std::string compressed_rows(const Image& image, const EncodeOptions& options) {
+  const size_t row_bytes = 1 + size_t(image.width()) * 3 * size_t(options.bit_depth / 8);
+  const int height = image.height();
+  std::vector<uint8_t> rows(row_bytes * size_t(height));
+  constexpr int kRowsPerTask = 64;
+  const int tasks = (height + kRowsPerTask - 1) / kRowsPerTask;
+  parallel_for(tasks, std::clamp(options.threads, 1, std::max(1, tasks)), [&](int task, int) {
+    const int end = std::min(height, (task + 1) * kRowsPerTask);
+    for (int y = task * kRowsPerTask; y < end; ++y) filtered_row(image, y, options, rows.data() + size_t(y) * row_bytes);
+  });
+  return zlib_stream(rows, kCompressionLevel, options.threads);
+}
+
 /// A libpng read session; destroyed by its owner, outside any setjmp frame.
 struct PngReader {
   png_structp png = nullptr;
@@ -145,16 +159,9 @@ std::string encode_png(const Image& image, const EncodeOptions& options) {
   for (const auto& entry : options.metadata)
     if (entry.first.empty() || entry.first.size() > 79 || entry.first.find('\0') != std::string::npos)
       throw OutputError("PNG text keys are 1 to 79 characters, not '" + entry.first + "'");
+  // Compute the pixel data first: the filtered rows are freed before the file is put together.
+  const std::string pixel_data = compressed_rows(image, options);
   const size_t width = size_t(image.width()), height = size_t(image.height());
-  const size_t row_bytes = 1 + width * 3 * size_t(options.bit_depth / 8);
-  std::vector<uint8_t> rows(row_bytes * height);
-  constexpr int kRowsPerTask = 64;
-  const int tasks = int((height + kRowsPerTask - 1) / kRowsPerTask);
-  parallel_for(tasks, std::clamp(options.threads, 1, std::max(1, tasks)), [&](int task, int) {
-    const int end = std::min(int(height), (task + 1) * kRowsPerTask);
-    for (int y = task * kRowsPerTask; y < end; ++y) filtered_row(image, y, options, rows.data() + size_t(y) * row_bytes);
-  });
-
   std::string out = "\x89PNG\r\n\x1a\n";
   std::string header;
   for (const size_t v : {width, height})
@@ -165,7 +172,7 @@ std::string encode_png(const Image& image, const EncodeOptions& options) {
   // Tag sRGB-encoded output; linear output carries no colour chunk (viewers assume sRGB).
   if (options.gamma == OutputGamma::kSrgb) append_chunk(out, "sRGB", std::string(1, '\0'));  // perceptual
   for (const auto& [key, value] : options.metadata) append_chunk(out, "tEXt", key + '\0' + value);
-  append_chunk(out, "IDAT", zlib_stream(rows, kCompressionLevel, options.threads));
+  append_chunk(out, "IDAT", pixel_data);
   append_chunk(out, "IEND", "");
   return out;
 }

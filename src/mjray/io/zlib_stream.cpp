@@ -68,6 +68,7 @@ std::string zlib_stream(std::span<const uint8_t> data, int level, int threads) {
   uLong checksum = checksums[0];
   for (size_t i = 0; i < strips; ++i) {
     out += deflated[i];
+    std::string().swap(deflated[i]);  // a large image's strips and stream need not coexist
     if (i > 0) checksum = adler32_combine(checksum, checksums[i], z_off_t(strip(i).size()));
   }
   append_big_endian(out, uint32_t(checksum));
