@@ -25,9 +25,10 @@ inline ChunkRange chunk_range(size_t count, int chunk, int chunks) {
 }
 
 /// Calls body(index, thread) for every index in [0, count), on `threads` threads (the caller's
-/// thread is thread 0).
+/// thread is thread 0), or on fewer when there are fewer indices.
 template <class Body>
 void parallel_for(int count, int threads, Body&& body) {
+  threads = std::clamp(threads, 1, std::max(1, count));
   std::atomic<int> next{0};
   auto worker = [&](int thread) {
     for (int i = next++; i < count; i = next++) body(i, thread);

@@ -12,6 +12,7 @@
 
 #include "mjray/core/error.h"
 #include "mjray/core/parallel_for.h"
+#include "mjray/io/big_endian.h"
 #include "mjray/io/quantise.h"
 #include "mjray/io/zlib_stream.h"
 
@@ -60,14 +61,11 @@ std::string failure(const PngIo& io) {
 
 /// Appends a PNG chunk: length, type, data, and the CRC-32 of type and data.
 void append_chunk(std::string& out, const char (&type)[5], std::string_view data) {
-  const auto big_endian = [&](uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) out += char((v >> shift) & 0xff);
-  };
-  big_endian(uint32_t(data.size()));
+  append_big_endian(out, uint32_t(data.size()));
   const size_t start = out.size();
   out.append(type, 4);
   out.append(data);
-  big_endian(uint32_t(crc32(0, reinterpret_cast<const Bytef*>(out.data() + start), uInt(out.size() - start))));
+  append_big_endian(out, uint32_t(crc32(0, reinterpret_cast<const Bytef*>(out.data() + start), uInt(out.size() - start))));
 }
 
 /// Row y of `image` as PNG stores it: its filter type, 1 (Sub), then every byte of its
@@ -101,7 +99,7 @@ std::string compressed_rows(const Image& image, const EncodeOptions& options) {
   std::vector<uint8_t> rows(row_bytes * size_t(height));
   constexpr int kRowsPerTask = 64;
   const int tasks = (height + kRowsPerTask - 1) / kRowsPerTask;
-  parallel_for(tasks, std::clamp(options.threads, 1, std::max(1, tasks)), [&](int task, int) {
+  parallel_for(tasks, options.threads, [&](int task, int) {
     const int end = std::min(height, (task + 1) * kRowsPerTask);
     for (int y = task * kRowsPerTask; y < end; ++y) filtered_row(image, y, options, rows.data() + size_t(y) * row_bytes);
   });
@@ -161,11 +159,10 @@ std::string encode_png(const Image& image, const EncodeOptions& options) {
       throw OutputError("PNG text keys are 1 to 79 characters, not '" + entry.first + "'");
   // Compute the pixel data first: the filtered rows are freed before the file is put together.
   const std::string pixel_data = compressed_rows(image, options);
-  const size_t width = size_t(image.width()), height = size_t(image.height());
   std::string out = "\x89PNG\r\n\x1a\n";
   std::string header;
-  for (const size_t v : {width, height})
-    for (int shift = 24; shift >= 0; shift -= 8) header += char((v >> shift) & 0xff);
+  append_big_endian(header, uint32_t(image.width()));
+  append_big_endian(header, uint32_t(image.height()));
   header += char(options.bit_depth);
   header += std::string("\x02\0\0\0", 4);  // RGB; deflate; adaptive filtering; not interlaced
   append_chunk(out, "IHDR", header);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mjray/core/parallel_for.h"
+#include "mjray/io/big_endian.h"
 
 namespace mjray {
 
@@ -38,10 +39,6 @@ std::string deflate_strip(std::span<const uint8_t> before, std::span<const uint8
   return out;
 }
 
-void append_big_endian(std::string& out, uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out += char((v >> shift) & 0xff);
-}
-
 }  // namespace
 
 std::string zlib_stream(std::span<const uint8_t> data, int level, int threads) {
@@ -49,7 +46,7 @@ std::string zlib_stream(std::span<const uint8_t> data, int level, int threads) {
   std::vector<std::string> deflated(strips);
   std::vector<uLong> checksums(strips);
   const auto strip = [&](size_t i) { return data.subspan(i * kStripBytes, std::min(kStripBytes, data.size() - i * kStripBytes)); };
-  parallel_for(int(strips), std::clamp(threads, 1, int(strips)), [&](int index, int) {
+  parallel_for(int(strips), threads, [&](int index, int) {
     const auto i = size_t(index);
     const size_t begin = i * kStripBytes, primed = std::min(begin, kWindowBytes);
     deflated[i] = deflate_strip(data.subspan(begin - primed, primed), strip(i), level, i + 1 == strips);
