@@ -27,8 +27,7 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
   if (in_front != 0 && in_front != 4) return;
   const auto pyramid = LightPyramid::make(offset_origin(si, region[0] - si.point), region);
   if (!pyramid) return;
-  constexpr uint32_t kNone = ~uint32_t(0);
-  const uint32_t own = in_front == 4 ? si.prim : kNone;
+  const uint32_t own = in_front == 4 ? si.prim : kNoPrimitive;
   const auto found = accel.region_primitives(*pyramid, own, std::span(candidates_).first(kCapacity));
   if (!found) return;
   if (*found == 0) {
@@ -38,7 +37,7 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
   size_t size = *found;
   // The rays are tested against the surface's own primitive too, exactly as the accelerator
   // would: what cannot stand in the way is not trusted to miss when rounding is involved.
-  if (own != kNone) candidates_[size++] = own;
+  if (own != kNoPrimitive) candidates_[size++] = own;
   for (size_t i = 0; i < size; ++i)
     if (candidates_[i] == likely_blocker) std::swap(candidates_[i], candidates_[0]);
   list_.emplace(prims, std::span<const uint32_t>(candidates_.data(), size));

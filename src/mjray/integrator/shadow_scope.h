@@ -21,6 +21,8 @@ class ShadowScope {
   /// Small, because the BVH's own leaf tests beat a longer list (measured on the glass and
   /// mesh bench scenes).
   static constexpr size_t kCapacity = 2;
+  /// A `likely_blocker` that names no primitive.
+  static constexpr uint32_t kNoPrimitive = ~uint32_t(0);
 
   /// Every primitive of `accel` (for one-sample lights, where a search would not pay).
   explicit ShadowScope(const Accelerator& accel) : occluders_(&accel) {}
@@ -43,6 +45,38 @@ class ShadowScope {
   std::optional<PrimitiveList> list_;
   const Accelerator* occluders_;
   bool clear_ = false;
+};
+
+/// A ShadowScope searched for only when a shadow ray first needs it: samples that the surface
+/// reflects none of trace no ray (a glass away from its narrow highlight, for most of an area
+/// light), so a shading point may need no search at all.
+class DeferredShadowScope {
+ public:
+  /// Every primitive of `accel`, as ShadowScope(accel).
+  explicit DeferredShadowScope(const Accelerator& accel) : accel_(accel) {}
+  /// The scope ShadowScope(prims, accel, si, light, *likely_blocker) would be, with the
+  /// blocker read when it is searched for (none when `likely_blocker` is null).
+  DeferredShadowScope(const PrimitiveSet& prims, const Accelerator& accel, const SurfaceInteraction& si,
+                      const Light& light, const uint32_t* likely_blocker)
+      : accel_(accel), prims_(&prims), si_(&si), light_(&light), likely_blocker_(likely_blocker) {}
+
+  const ShadowScope& get() {
+    if (!scope_) {
+      if (prims_)
+        scope_.emplace(*prims_, accel_, *si_, *light_, likely_blocker_ ? *likely_blocker_ : ShadowScope::kNoPrimitive);
+      else
+        scope_.emplace(accel_);
+    }
+    return *scope_;
+  }
+
+ private:
+  const Accelerator& accel_;
+  const PrimitiveSet* prims_ = nullptr;  // null: the whole accelerator
+  const SurfaceInteraction* si_ = nullptr;
+  const Light* light_ = nullptr;
+  const uint32_t* likely_blocker_ = nullptr;
+  std::optional<ShadowScope> scope_;
 };
 
 }  // namespace mjray

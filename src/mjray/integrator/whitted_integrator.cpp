@@ -48,13 +48,13 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
     if (n == 1) {
-      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state,
-                             ShadowScope(accel_));
+      DeferredShadowScope scope(accel_);
+      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state, scope);
       continue;
     }
-    // Found once for all n×n samples: what their shadow rays can hit, if anything.
-    const uint32_t* cached = state.occluders.slot(index);
-    const ShadowScope scope(world_.primitives, accel_, si, light, cached ? *cached : OccluderCache::kNone);
+    // Found once for all n×n samples (when one first needs a shadow ray): what their shadow
+    // rays can hit, if anything.
+    DeferredShadowScope scope(world_.primitives, accel_, si, light, state.occluders.slot(index));
     Color sum;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
@@ -70,14 +70,19 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
 
 Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const ShadingFrame& frame,
                                       const LocalShading& local, const LightSample& sample,
-                                      size_t light_index, TraceState& state, const ShadowScope& scope) const {
+                                      size_t light_index, TraceState& state, DeferredShadowScope& deferred) const {
   const Vector3 to_light = sample.position - si.point;
   const float distance = length(to_light);
   if (!(distance > 0)) return {};
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
-  if (scope.clear()) return local.phong(frame, l, n_dot_l) * sample.intensity;
+  const Color unshadowed = local.phong(frame, l, n_dot_l) * sample.intensity;
+  // What the surface would not reflect needs no shadow ray: a glass's narrow highlight is
+  // exactly zero (the power underflows) for most of an area light's samples.
+  if (unshadowed.is_black()) return {};
+  const ShadowScope& scope = deferred.get();
+  if (scope.clear()) return unshadowed;
   ++state.rays.shadow;
   const Ray shadow = spawn_ray_to(si, sample.position);
   // The primitive that blocked the last shadow ray toward this light mostly blocks this one
@@ -90,14 +95,14 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   // With a caustic photon map glass shadows like any object: the map brings its light.
   if (!settings_.transmissive_shadows && world_.primitives.any_transmissive()) {
     if (occluders.occluded(shadow, kShadowTMax)) return {};
-    return local.phong(frame, l, n_dot_l) * sample.intensity;
+    return unshadowed;
   }
   // Through glass: what the transmissive surfaces on the way let pass.
   const ShadowResult through = shadow_ray_transmittance(world_, occluders, shadow, kShadowTMax);
   if (through.blocker && cached) *cached = *through.blocker;
   if (through.kept.is_black()) return {};
-  if (!world_.primitives.any_transmissive()) return local.phong(frame, l, n_dot_l) * sample.intensity;
-  return local.phong(frame, l, n_dot_l) * sample.intensity * through.kept;
+  if (!world_.primitives.any_transmissive()) return unshadowed;
+  return unshadowed * through.kept;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,

@@ -57,10 +57,11 @@ class WhittedIntegrator final : public Integrator {
   Color surface_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                       float weight, RandomStream& random, TraceState& state) const;
   /// The Phong reflection of one light sample, or black when it is behind the surface or
-  /// in shadow; its shadow ray can hit only what `scope` holds.
+  /// in shadow; its shadow ray, traced only where the surface reflects some of the sample,
+  /// can hit only what `deferred` holds.
   Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                      const LightSample& sample, size_t light_index, TraceState& state,
-                     const ShadowScope& scope) const;
+                     DeferredShadowScope& deferred) const;
   /// Light arriving along the material's specular lobes, within the depth limits.
   Color specular_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobes& lobes,
                        Depth depth, RandomStream& random, TraceState& state) const;

@@ -186,6 +186,34 @@ float floor_under_slab(std::optional<Material> slab, bool ball = false) {
   return test::TestJob(job).radiance({{0.01f, 1, 0.02f}, {0, -1, 0}}).g;
 }
 
+/// One look straight down at the origin of a floor of `floor` material under a 4×4 area
+/// light centred at `light_centre`, with a small box in the way of part of it.
+Color floor_under_area_light(const PhongMaterial& floor, const Point3& light_centre, RayCounters& counters) {
+  RenderJob job;
+  // Beside the camera ray, in the way of some samples.
+  const Point3 half_way{light_centre.x * 0.5f + 0.2f, light_centre.y * 0.5f, light_centre.z * 0.5f + 0.2f};
+  job.root = test::group({test::mesh(test::floor_quad(100), floor),
+                          test::box(half_way - Vector3{0.1f, 0.1f, 0.1f}, half_way + Vector3{0.1f, 0.1f, 0.1f})});
+  job.lights = {AreaLight{light_centre - Vector3{0.5f, 0, 0.5f}, {1, 0, 0}, {0, 0, 1}, {1, 1, 1}, {1, 0, 0}}};
+  return test::TestJob(job, test::oracle_options({8, 8, 4})).radiance({{0, 5, 0}, {0, -1, 0}}, &counters);
+}
+
+TEST(ClosedForm, LightTheSurfaceCannotReflectNeedsNoShadowRay) {
+  // A mirror-like Phong surface (no diffuse part, shininess 500) reflects an area light only
+  // near the mirror direction: from the light straight above, all 16 samples count and each
+  // needs its shadow ray; from a light far to the side, max(0, r·v)^500 is exactly zero for
+  // every sample, so the pixel is black and no shadow ray is traced.
+  const PhongMaterial mirror_like{{0, 0, 0}, {1, 1, 1}, 500};
+  RayCounters counters;
+  EXPECT_GT(floor_under_area_light(mirror_like, {0, 10, 0}, counters).g, 0.1f);
+  EXPECT_EQ(counters.shadow, 16u);
+  EXPECT_EQ(floor_under_area_light(mirror_like, {20, 5, 0}, counters), Color(0, 0, 0));
+  EXPECT_EQ(counters.shadow, 0u);
+  // A diffuse part reflects every sample: all are traced.
+  EXPECT_GT(floor_under_area_light({{0.5f, 0.5f, 0.5f}, {1, 1, 1}, 500}, {20, 5, 0}, counters).g, 0);
+  EXPECT_EQ(counters.shadow, 16u);
+}
+
 TEST(ClosedForm, ShadowsThroughASlabKeepTheRefractedShare) {
   const float open = floor_under_slab(std::nullopt);
   ASSERT_GT(open, 0.9f);
