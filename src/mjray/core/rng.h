@@ -35,6 +35,9 @@ class RandomStream {
   /// A stream for a sub-task (e.g. one glossy ray) that does not disturb this stream's order.
   constexpr RandomStream fork(uint64_t tag) const { return RandomStream(key_, tag); }
 
+  /// Passes over the next `draws` values unread: the stream goes on as if they had been drawn.
+  constexpr void skip(uint64_t draws) { counter_ += draws; }
+
   /// The next uniform value in [0, 1).
   constexpr float uniform() {
     ++counter_;

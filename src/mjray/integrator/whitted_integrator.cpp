@@ -6,6 +6,7 @@
 #include "mjray/geometry/spawn_ray.h"
 #include "mjray/integrator/closest_surface.h"
 #include "mjray/integrator/shadow_transmittance.h"
+#include "mjray/integrator/unreflected_light.h"
 
 namespace mjray {
 
@@ -47,6 +48,13 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
+    if (reflects_none_of(local, frame, si.point, light)) {
+      // Its samples would add exactly zero (+0, which also turns a −0 ambient into +0); their
+      // jitter is passed over so that later draws stay the same.
+      result += Color{};
+      if (n > 1) random.skip(uint64_t(2 * n * n));
+      continue;
+    }
     if (n == 1) {
       DeferredShadowScope scope(accel_);
       result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state, scope);

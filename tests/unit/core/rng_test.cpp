@@ -26,5 +26,15 @@ TEST(RandomStream, TheTableHoldsTheIndexHashes) {
   for (uint64_t i = 0; i < DrawIndexHashes::kCount; ++i) EXPECT_EQ(kDrawIndexHashes.of[i], mix64(i)) << i;
 }
 
+TEST(RandomStream, SkippingDrawsGoesOnAsIfTheyHadBeenDrawn) {
+  for (const uint64_t skipped : {uint64_t(0), uint64_t(1), uint64_t(32), uint64_t(DrawIndexHashes::kCount + 3)}) {
+    RandomStream drawn(3, 41, 2), skipping(3, 41, 2);
+    drawn.uniform(), skipping.uniform();
+    for (uint64_t i = 0; i < skipped; ++i) drawn.uniform();
+    skipping.skip(skipped);
+    for (int i = 0; i < 8; ++i) ASSERT_EQ(skipping.uniform(), drawn.uniform()) << skipped << ", " << i;
+  }
+}
+
 }  // namespace
 }  // namespace mjray
