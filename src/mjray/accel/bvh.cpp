@@ -58,6 +58,7 @@ struct TraversalView {
   const LeafPrimitive* leaves;
   const PrimitiveSet* prims;
   uint32_t triangle_count;
+  bool only_triangles;  // no shapes: a leaf's entries need no check of their kind
 };
 
 namespace baseline {
@@ -133,7 +134,7 @@ size_t Bvh::memory_bytes() const {
 template <BvhQuery kQuery>
 bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
   if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
-  const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_};
+  const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_, prims_.shapes.empty()};
   constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {

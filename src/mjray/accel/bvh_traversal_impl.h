@@ -96,8 +96,10 @@ inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& r
   if (count < 2) return all;
   const LeafPrimitive* leaf = bvh.leaves + first;
   unsigned shapes = 0;
-  for (uint32_t i = 0; i < count; ++i) shapes |= unsigned(leaf[i].prim >= bvh.triangle_count) << i;
-  if (shapes == all) return all;
+  if (!bvh.only_triangles) {
+    for (uint32_t i = 0; i < count; ++i) shapes |= unsigned(leaf[i].prim >= bvh.triangle_count) << i;
+    if (shapes == all) return all;
+  }
   // Rows of x, y, z per corner over the four entries (a short run repeats its last entry).
   const auto corner = [&](size_t offset, __m128 (&xyz)[3]) {
     __m128 r[4];
