@@ -48,7 +48,7 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
-    if (reflects_none_of(local, frame, si.point, light)) {
+    if (local.kd.is_black() && reflects_none_of(local, frame, si.point, light)) {
       // Its samples would add exactly zero (+0, which also turns a −0 ambient into +0); their
       // jitter is passed over so that later draws stay the same.
       result += Color{};
@@ -85,12 +85,13 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
-  const Color unshadowed = local.phong(frame, l, n_dot_l) * sample.intensity;
-  // What the surface would not reflect needs no shadow ray: a glass's narrow highlight is
-  // exactly zero (the power underflows) for most of an area light's samples.
-  if (unshadowed.is_black()) return {};
+  const auto unshadowed = [&] { return local.phong(frame, l, n_dot_l) * sample.intensity; };
+  // What the surface would not reflect needs no shadow ray: without a diffuse part, a
+  // glass's narrow highlight is exactly zero (the power underflows) for most of an area
+  // light's samples. Elsewhere the term is computed only for samples that reach the light.
+  if (local.kd.is_black() && unshadowed().is_black()) return {};
   const ShadowScope& scope = deferred.get();
-  if (scope.clear()) return unshadowed;
+  if (scope.clear()) return unshadowed();
   ++state.rays.shadow;
   const Ray shadow = spawn_ray_to(si, sample.position);
   // The primitive that blocked the last shadow ray toward this light mostly blocks this one
@@ -103,14 +104,14 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   // With a caustic photon map glass shadows like any object: the map brings its light.
   if (!settings_.transmissive_shadows && world_.primitives.any_transmissive()) {
     if (occluders.occluded(shadow, kShadowTMax)) return {};
-    return unshadowed;
+    return unshadowed();
   }
   // Through glass: what the transmissive surfaces on the way let pass.
   const ShadowResult through = shadow_ray_transmittance(world_, occluders, shadow, kShadowTMax);
   if (through.blocker && cached) *cached = *through.blocker;
   if (through.kept.is_black()) return {};
-  if (!world_.primitives.any_transmissive()) return unshadowed;
-  return unshadowed * through.kept;
+  if (!world_.primitives.any_transmissive()) return unshadowed();
+  return unshadowed() * through.kept;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
