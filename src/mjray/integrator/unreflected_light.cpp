@@ -21,8 +21,8 @@ bool intensity_is_finite(const Light& light) {
 
 }  // namespace
 
-bool reflects_none_of(const LocalShading& local, const ShadingFrame& frame, const Point3& point, const Light& light) {
-  if (!local.kd.is_black() || !intensity_is_finite(light)) return false;
+bool highlight_misses(const LocalShading& local, const ShadingFrame& frame, const Point3& point, const Light& light) {
+  if (!intensity_is_finite(light)) return false;
   if (local.ks.is_black()) return true;
   const Color& ks = local.ks;
   if (!(local.shininess > 0) || !std::isfinite(ks.r) || !std::isfinite(ks.g) || !std::isfinite(ks.b)) return false;

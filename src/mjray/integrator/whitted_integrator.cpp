@@ -10,6 +10,13 @@
 
 namespace mjray {
 
+namespace {
+
+/// Random values an area-light sample draws: its jitter in s and in t.
+constexpr uint64_t kDrawsPerLightSample = 2;
+
+}  // namespace
+
 Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, TraceState& state) const {
   ++state.rays.primary;
   return trace(ray, Depth{}, random, state);
@@ -48,11 +55,11 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
-    if (local.kd.is_black() && reflects_none_of(local, frame, si.point, light)) {
+    if (reflects_none_of(local, frame, si.point, light)) {
       // Its samples would add exactly zero (+0, which also turns a −0 ambient into +0); their
       // jitter is passed over so that later draws stay the same.
       result += Color{};
-      if (n > 1) random.skip(uint64_t(2 * n * n));
+      if (n > 1) random.skip(kDrawsPerLightSample * uint64_t(n * n));
       continue;
     }
     if (n == 1) {
@@ -66,6 +73,7 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     Color sum;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
+        // A sample's kDrawsPerLightSample draws: its jitter in s, then in t.
         const float jitter_s = random.uniform();
         const float jitter_t = random.uniform();
         const Point2 u{(float(i) + jitter_s) / float(n), (float(j) + jitter_t) / float(n)};
@@ -85,10 +93,10 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
-  const auto unshadowed = [&] { return local.phong(frame, l, n_dot_l) * sample.intensity; };
   // What the surface would not reflect needs no shadow ray: without a diffuse part, a
   // glass's narrow highlight is exactly zero (the power underflows) for most of an area
   // light's samples. Elsewhere the term is computed only for samples that reach the light.
+  const auto unshadowed = [&] { return local.phong(frame, l, n_dot_l) * sample.intensity; };
   if (local.kd.is_black() && unshadowed().is_black()) return {};
   const ShadowScope& scope = deferred.get();
   if (scope.clear()) return unshadowed();
