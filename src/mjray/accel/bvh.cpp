@@ -55,7 +55,9 @@ struct StackEntry {
 /// What traversal reads of a Bvh.
 struct TraversalView {
   const BvhWideNode* nodes;
-  const LeafPrimitive* leaves;
+  const float* leaf_data;  // the LeafRuns
+
+  LeafRun leaf(uint32_t first, uint32_t count) const { return {leaf_data + size_t(first) * LeafRun::kLeafFloats, count}; }
   const PrimitiveSet* prims;
   uint32_t triangle_count;
   bool only_triangles;  // no shapes: a leaf's entries need no check of their kind
@@ -108,33 +110,38 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
     bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
   }
   BvhNodes().swap(built.nodes);
-  leaf_prims_.resize(built.order.size());
-  // The copy in chunks on all the build's threads.
+  leaf_data_.assign(built.order.size() * LeafRun::kLeafFloats + LeafRun::kLeafPadding, 0.f);
+  // Fill each leaf's run, in chunks of nodes on all the build's threads.
   constexpr int kChunks = 64;
   parallel_for(kChunks, resolve_thread_count(threads), [&](int chunk, int) {
-    for (auto [i, end] = chunk_range(built.order.size(), chunk, kChunks); i < end; ++i) {
-      LeafPrimitive& leaf = leaf_prims_[i];
-      leaf.prim = built.order[i];
-      if (prims.is_triangle(leaf.prim)) {
-        const auto v = prims.triangle_vertices(leaf.prim);
-        leaf.p0 = std::bit_cast<std::array<float, 3>>(v[0]);
-        leaf.p1 = std::bit_cast<std::array<float, 3>>(v[1]);
-        leaf.p2 = std::bit_cast<std::array<float, 3>>(v[2]);
-      } else {
-        leaf.p0 = leaf.p1 = leaf.p2 = {0, 0, 0};
-      }
+    for (auto [n, end] = chunk_range(nodes_.size(), chunk, kChunks); n < end; ++n) {
+      const BvhWideNode& node = nodes_[n];
+      for (size_t c = 0; c < size_t(kBvhWidth); ++c)
+        if (node.is_leaf(c)) write_leaf_run(node.first(c), node.count(c), built.order);
     }
   });
 }
 
+void Bvh::write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_t> order) {
+  float* run = leaf_data_.data() + size_t(first) * LeafRun::kLeafFloats;
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t prim = order[first + i];
+    run[LeafRun::kIdRow * count + i] = std::bit_cast<float>(prim);
+    if (!prims_.is_triangle(prim)) continue;  // a shape keeps zero corners
+    const auto v = prims_.triangle_vertices(prim);
+    for (uint32_t k = 0; k < 3; ++k)
+      for (uint32_t axis = 0; axis < 3; ++axis) run[(3 * k + axis) * count + i] = v[k][int(axis)];
+  }
+}
+
 size_t Bvh::memory_bytes() const {
-  return nodes_.size() * sizeof(BvhWideNode) + leaf_prims_.size() * sizeof(LeafPrimitive);
+  return nodes_.size() * sizeof(BvhWideNode) + leaf_data_.size() * sizeof(float);
 }
 
 template <BvhQuery kQuery>
 bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
   if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
-  const TraversalView view{nodes_.data(), leaf_prims_.data(), &prims_, triangle_count_, prims_.shapes.empty()};
+  const TraversalView view{nodes_.data(), leaf_data_.data(), &prims_, triangle_count_, prims_.shapes.empty()};
   constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {
@@ -176,16 +183,17 @@ std::optional<size_t> Bvh::region_primitives(const LightPyramid& region, uint32_
         continue;
       }
       // A leaf: each primitive not surely outside is a candidate.
-      for (uint32_t k = node.first(i), end = k + node.count(i); k < end; ++k) {
-        const LeafPrimitive& leaf = leaf_prims_[k];
-        if (leaf.prim == ignore) continue;
-        const bool outside = leaf.prim < triangle_count_
-                                 ? region.outside(std::bit_cast<Point3>(leaf.p0), std::bit_cast<Point3>(leaf.p1),
-                                                  std::bit_cast<Point3>(leaf.p2))
-                                 : region.outside(prims_.primitive_bounds(leaf.prim));
+      const LeafRun run{leaf_data_.data() + size_t(node.first(i)) * LeafRun::kLeafFloats, node.count(i)};
+      for (uint32_t k = 0; k < run.count; ++k) {
+        const uint32_t prim = run.prim(k);
+        if (prim == ignore) continue;
+        const bool outside = prim < triangle_count_
+                                 ? region.outside(std::bit_cast<Point3>(run.corner(0, k)), std::bit_cast<Point3>(run.corner(1, k)),
+                                                  std::bit_cast<Point3>(run.corner(2, k)))
+                                 : region.outside(prims_.primitive_bounds(prim));
         if (outside) continue;
         if (found == out.size()) return std::nullopt;
-        out[found++] = leaf.prim;
+        out[found++] = prim;
       }
     }
   }

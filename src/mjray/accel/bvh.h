@@ -4,6 +4,7 @@
 /// of a node's boxes and a ray visits few nodes.
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -19,14 +20,14 @@ constexpr int kBvhWidth = 8;
 
 /// A node with up to kBvhWidth children, bounds stored axis by axis (structure of arrays) so
 /// that SIMD slab tests cover several children at once. A child is an inner node or a leaf:
-/// a run of LeafPrimitives. Unused slots have empty bounds, which every ray misses. 224 bytes:
+/// a LeafRun. Unused slots have empty bounds, which every ray misses. 224 bytes:
 /// a leaf's run is packed into its child word, so a node is its boxes and eight words.
 struct alignas(32) BvhWideNode {
   /// Leaf words have the top bit set (so one SIMD movemask finds a node's leaves), then the
-  /// first LeafPrimitive, then the count in the low bits.
+  /// run's first primitive (in leaf order), then the count in the low bits.
   static constexpr uint32_t kLeafFlag = 0x80000000u;
   static constexpr int kCountBits = 3;
-  /// The most LeafPrimitives a BVH can index.
+  /// The most primitives a BVH can index.
   static constexpr uint32_t kMaxLeafPrimitives = kLeafFlag >> kCountBits;
 
   /// bounds[k][i]: k = 0..2 lower x, y, z; k = 3..5 upper x, y, z of child i (world space).
@@ -34,10 +35,10 @@ struct alignas(32) BvhWideNode {
   /// Child i: an inner node's index, or a leaf (leaf_word); 0 in unused slots.
   std::array<uint32_t, kBvhWidth> child;
 
-  /// The word of a leaf of `count` (1..7) LeafPrimitives from `first`.
+  /// The word of a leaf of `count` (1..7) primitives from `first`.
   static constexpr uint32_t leaf_word(uint32_t first, uint32_t count) { return kLeafFlag | first << kCountBits | count; }
   bool is_leaf(size_t i) const { return (child[i] & kLeafFlag) != 0; }
-  /// A leaf's first LeafPrimitive and count.
+  /// A leaf's first primitive and count.
   uint32_t first(size_t i) const { return (child[i] & ~kLeafFlag) >> kCountBits; }
   uint32_t count(size_t i) const { return child[i] & ((1u << kCountBits) - 1); }
 };
@@ -46,13 +47,27 @@ static_assert(sizeof(BvhWideNode) == 224);
 /// Wide nodes as the BVH keeps them: on large pages, which rays read at random.
 using BvhWideNodes = std::vector<BvhWideNode, LargePageAllocator<BvhWideNode>>;
 
-/// A primitive as a leaf stores it: a triangle's world-space corners copied in leaf order
-/// (so leaf tests read contiguous memory), or just the id of a shape.
-struct LeafPrimitive {
-  std::array<float, 3> p0, p1, p2;  ///< triangle corners; unused for shapes
-  uint32_t prim;                    ///< primitive id in the PrimitiveSet
+/// A leaf's run of primitives as the BVH stores it: kLeafFloats floats per primitive, in rows
+/// of `count` (p0.x of each primitive, then p0.y, … p2.z, then the primitive ids), so that one
+/// unaligned SIMD load gives a coordinate of up to four triangles with no transposing. Shapes
+/// store zero corners. Runs lie end to end in leaf order; the array has kLeafPadding floats
+/// more so that a row's load may read past the last run.
+struct LeafRun {
+  static constexpr uint32_t kLeafFloats = 10;  ///< nine corner coordinates and the id
+  static constexpr uint32_t kIdRow = 9;
+  static constexpr size_t kLeafPadding = 3;
+
+  const float* data;  ///< the run's first float
+  uint32_t count;     ///< primitives in the run
+
+  /// Row `row` (coordinate 3·corner + axis, or kIdRow): `count` floats.
+  const float* row(uint32_t row) const { return data + row * count; }
+  uint32_t prim(uint32_t i) const { return std::bit_cast<uint32_t>(row(kIdRow)[i]); }
+  /// Corner k (0..2) of primitive i.
+  std::array<float, 3> corner(uint32_t k, uint32_t i) const {
+    return {row(3 * k)[i], row(3 * k + 1)[i], row(3 * k + 2)[i]};
+  }
 };
-static_assert(sizeof(LeafPrimitive) == 40);
 
 /// What a traversal looks for.
 enum class BvhQuery {
@@ -85,12 +100,16 @@ class Bvh final : public Accelerator {
 
   /// The nodes, root first (none for an empty world); exposed for tests and statistics.
   std::span<const BvhWideNode> nodes() const { return nodes_; }
-  /// The primitives in leaf order.
-  std::span<const LeafPrimitive> leaf_primitives() const { return leaf_prims_; }
+  /// The leaves' runs end to end (LeafRun), without the padding; exposed for tests.
+  std::span<const float> leaf_data() const { return {leaf_data_.data(), leaf_data_.size() - LeafRun::kLeafPadding}; }
+  /// The number of primitives in the leaves.
+  size_t leaf_primitive_count() const { return (leaf_data_.size() - LeafRun::kLeafPadding) / LeafRun::kLeafFloats; }
   /// Whether traversal runs the 8-wide AVX slab test (chosen at construction).
   bool uses_avx() const { return use_avx_; }
 
  private:
+  /// Writes the LeafRun of order[first, first + count).
+  void write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_t> order);
   template <BvhQuery kQuery>
   bool trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const;
 
@@ -98,7 +117,7 @@ class Bvh final : public Accelerator {
   uint32_t triangle_count_ = 0;
   bool use_avx_ = false;
   BvhWideNodes nodes_;
-  std::vector<LeafPrimitive, LargePageAllocator<LeafPrimitive>> leaf_prims_;
+  std::vector<float, LargePageAllocator<float>> leaf_data_;  // LeafRuns, then kLeafPadding floats
   Bounds3 bounds_;
 };
 

@@ -84,58 +84,65 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
   return mask;
 }
 
-/// The primitives of the leaf run [first, first + count) (count ≤ 4) that need the full test:
-/// a bit per entry. A triangle is left out only when the watertight test would reject it at its
-/// edge functions: they are computed here for four triangles at once, with the same float
-/// operations in the same order as intersect_triangle, and a triangle is dropped only when they
-/// have strictly mixed signs and none is zero (zero sends intersect_triangle to its double
-/// fallback). Shapes always need their test.
-inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& ray, uint32_t first, uint32_t count) {
+/// The primitives of a leaf run (count ≤ 4) that need the full test for t in `t_range`: a bit
+/// per entry. A triangle is left out only where the watertight test would reject it: its edge
+/// functions, determinant and distance are computed here for four triangles at once, with the
+/// same float operations in the same order as intersect_triangle, and it is dropped only when
+/// one of that test's float checks fails and no edge function is zero (zero sends
+/// intersect_triangle to its double fallback). Shapes always need their test.
+inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& ray, const LeafRun& run, Interval t_range) {
 #if defined(__SSE2__)
-  const unsigned all = (1u << count) - 1;
-  if (count < 2) return all;
-  const LeafPrimitive* leaf = bvh.leaves + first;
+  const unsigned all = (1u << run.count) - 1;
+  if (run.count < 2) return all;
   unsigned shapes = 0;
   if (!bvh.only_triangles) {
-    for (uint32_t i = 0; i < count; ++i) shapes |= unsigned(leaf[i].prim >= bvh.triangle_count) << i;
+    for (uint32_t i = 0; i < run.count; ++i) shapes |= unsigned(run.prim(i) >= bvh.triangle_count) << i;
     if (shapes == all) return all;
   }
-  // Rows of x, y, z per corner over the four entries (a short run repeats its last entry).
-  const auto corner = [&](size_t offset, __m128 (&xyz)[3]) {
-    __m128 r[4];
-    for (uint32_t i = 0; i < 4; ++i) {
-      const auto* p = reinterpret_cast<const float*>(reinterpret_cast<const char*>(&leaf[std::min(i, count - 1)]) + offset);
-      r[i] = _mm_loadu_ps(p);
-    }
-    _MM_TRANSPOSE4_PS(r[0], r[1], r[2], r[3]);
-    xyz[0] = r[0], xyz[1] = r[1], xyz[2] = r[2];
-  };
-  __m128 p0[3], p1[3], p2[3];
-  corner(offsetof(LeafPrimitive, p0), p0);
-  corner(offsetof(LeafPrimitive, p1), p1);
-  corner(offsetof(LeafPrimitive, p2), p2);
-  const auto kx = size_t(ray.kx), ky = size_t(ray.ky), kz = size_t(ray.kz);
-  const __m128 ox = _mm_set1_ps(ray.origin[kx]), oy = _mm_set1_ps(ray.origin[ky]), oz = _mm_set1_ps(ray.origin[kz]);
-  const __m128 sx = _mm_set1_ps(ray.sx), sy = _mm_set1_ps(ray.sy);
-  const __m128 az = _mm_sub_ps(p0[kz], oz), bz = _mm_sub_ps(p1[kz], oz), cz = _mm_sub_ps(p2[kz], oz);
-  const __m128 ax = _mm_add_ps(_mm_sub_ps(p0[kx], ox), _mm_mul_ps(sx, az));
-  const __m128 ay = _mm_add_ps(_mm_sub_ps(p0[ky], oy), _mm_mul_ps(sy, az));
-  const __m128 bx = _mm_add_ps(_mm_sub_ps(p1[kx], ox), _mm_mul_ps(sx, bz));
-  const __m128 by = _mm_add_ps(_mm_sub_ps(p1[ky], oy), _mm_mul_ps(sy, bz));
-  const __m128 cx = _mm_add_ps(_mm_sub_ps(p2[kx], ox), _mm_mul_ps(sx, cz));
-  const __m128 cy = _mm_add_ps(_mm_sub_ps(p2[ky], oy), _mm_mul_ps(sy, cz));
+  // Lanes past the run's count hold the next row's floats: they are masked off at the end.
+  const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
+  const size_t corner_rows = 3 * size_t(run.count);
+  const float* x0 = run.data + size_t(kx) * run.count;
+  const float* y0 = run.data + size_t(ky) * run.count;
+  const float* z0 = run.data + size_t(kz) * run.count;
+  const auto coordinate = [&](size_t corner, const float* row0) { return _mm_loadu_ps(row0 + corner * corner_rows); };
+  const __m128 ox = _mm_set1_ps(ray.origin[size_t(kx)]), oy = _mm_set1_ps(ray.origin[size_t(ky)]);
+  const __m128 oz = _mm_set1_ps(ray.origin[size_t(kz)]);
+  const __m128 sx = _mm_set1_ps(ray.sx), sy = _mm_set1_ps(ray.sy), sz = _mm_set1_ps(ray.sz);
+  const __m128 az = _mm_sub_ps(coordinate(0, z0), oz), bz = _mm_sub_ps(coordinate(1, z0), oz);
+  const __m128 cz = _mm_sub_ps(coordinate(2, z0), oz);
+  const __m128 ax = _mm_add_ps(_mm_sub_ps(coordinate(0, x0), ox), _mm_mul_ps(sx, az));
+  const __m128 ay = _mm_add_ps(_mm_sub_ps(coordinate(0, y0), oy), _mm_mul_ps(sy, az));
+  const __m128 bx = _mm_add_ps(_mm_sub_ps(coordinate(1, x0), ox), _mm_mul_ps(sx, bz));
+  const __m128 by = _mm_add_ps(_mm_sub_ps(coordinate(1, y0), oy), _mm_mul_ps(sy, bz));
+  const __m128 cx = _mm_add_ps(_mm_sub_ps(coordinate(2, x0), ox), _mm_mul_ps(sx, cz));
+  const __m128 cy = _mm_add_ps(_mm_sub_ps(coordinate(2, y0), oy), _mm_mul_ps(sy, cz));
   const __m128 e0 = _mm_sub_ps(_mm_mul_ps(bx, cy), _mm_mul_ps(by, cx));
   const __m128 e1 = _mm_sub_ps(_mm_mul_ps(cx, ay), _mm_mul_ps(cy, ax));
   const __m128 e2 = _mm_sub_ps(_mm_mul_ps(ax, by), _mm_mul_ps(ay, bx));
   const __m128 zero = _mm_setzero_ps();
-  const __m128 negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(e0, zero), _mm_cmplt_ps(e1, zero)), _mm_cmplt_ps(e2, zero));
-  const __m128 positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(e0, zero), _mm_cmpgt_ps(e1, zero)), _mm_cmpgt_ps(e2, zero));
-  const __m128 zeroes = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(e0, zero), _mm_cmpeq_ps(e1, zero)), _mm_cmpeq_ps(e2, zero));
-  const unsigned rejected = unsigned(_mm_movemask_ps(_mm_andnot_ps(zeroes, _mm_and_ps(negative, positive))));
+  const auto any = [](__m128 a, __m128 b, __m128 c) { return _mm_or_ps(_mm_or_ps(a, b), c); };
+  const __m128 zeroes = any(_mm_cmpeq_ps(e0, zero), _mm_cmpeq_ps(e1, zero), _mm_cmpeq_ps(e2, zero));
+  // The edge functions have strictly mixed signs.
+  const __m128 outside = _mm_and_ps(any(_mm_cmplt_ps(e0, zero), _mm_cmplt_ps(e1, zero), _mm_cmplt_ps(e2, zero)),
+                                    any(_mm_cmpgt_ps(e0, zero), _mm_cmpgt_ps(e1, zero), _mm_cmpgt_ps(e2, zero)));
+  // The determinant is zero or not finite (x − x is 0 only for finite x).
+  const __m128 det = _mm_add_ps(_mm_add_ps(e0, e1), e2);
+  const __m128 no_det = _mm_or_ps(_mm_cmpeq_ps(det, zero), _mm_cmpneq_ps(_mm_sub_ps(det, det), zero));
+  // The scaled distance lies outside the range.
+  const __m128 t_scaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(e0, _mm_mul_ps(az, sz)), _mm_mul_ps(e1, _mm_mul_ps(bz, sz))),
+                                     _mm_mul_ps(e2, _mm_mul_ps(cz, sz)));
+  const __m128 t_min = _mm_set1_ps(t_range.min), t_max = _mm_set1_ps(t_range.max);
+  const __m128 min_det = _mm_mul_ps(t_min, det), max_det = _mm_mul_ps(t_max, det);
+  const __m128 out_of_range = _mm_or_ps(
+      _mm_and_ps(_mm_cmplt_ps(det, zero), _mm_or_ps(_mm_cmpge_ps(t_scaled, min_det), _mm_cmplt_ps(t_scaled, max_det))),
+      _mm_and_ps(_mm_cmpgt_ps(det, zero), _mm_or_ps(_mm_cmple_ps(t_scaled, min_det), _mm_cmpgt_ps(t_scaled, max_det))));
+  const __m128 fails = _mm_or_ps(_mm_or_ps(outside, no_det), out_of_range);
+  const unsigned rejected = unsigned(_mm_movemask_ps(_mm_andnot_ps(zeroes, fails)));
   return all & (~rejected | shapes);
 #else
-  (void)bvh, (void)ray, (void)first;
-  return (1u << count) - 1;
+  (void)bvh, (void)ray, (void)t_range;
+  return (1u << run.count) - 1;
 #endif
 }
 
@@ -146,9 +153,9 @@ inline void prefetch(const TraversalView& bvh, const StackEntry& e) {
     const char* p = reinterpret_cast<const char*>(bvh.nodes + e.child);
     for (size_t at = 0; at < sizeof(BvhWideNode); at += 64) __builtin_prefetch(p + at);
   } else {
-    const char* p = reinterpret_cast<const char*>(bvh.leaves + e.child);
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + (e.count * sizeof(LeafPrimitive) - 1));
+    const LeafRun run = bvh.leaf(e.child, e.count);
+    __builtin_prefetch(run.data);
+    __builtin_prefetch(run.data + (e.count * LeafRun::kLeafFloats - 1));
   }
 }
 
@@ -195,26 +202,27 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
         continue;
       }
     } else {
-      for (unsigned m = leaf_candidates(bvh, tri_ray, current.child, current.count); m != 0; m &= m - 1) {
-        const uint32_t i = current.child + uint32_t(std::countr_zero(m));
-        const LeafPrimitive& leaf = bvh.leaves[i];
-        // Once something is hit, a primitive at exactly the same t may still win: the lower
-        // primitive id does, as with every accelerator.
-        const float reach = found ? next_float(t_max, true) : t_max;
+      const LeafRun run = bvh.leaf(current.child, current.count);
+      // Once something is hit, a primitive at exactly the same t may still win: the lower
+      // primitive id does, as with every accelerator.
+      const auto reach = [&] { return found ? next_float(t_max, true) : t_max; };
+      for (unsigned m = leaf_candidates(bvh, tri_ray, run, {t_min, reach()}); m != 0; m &= m - 1) {
+        const auto i = uint32_t(std::countr_zero(m));
+        const uint32_t prim = run.prim(i);
         Hit h;
-        if (leaf.prim < bvh.triangle_count) {
-          const auto tri = intersect_triangle(tri_ray, {t_min, reach}, leaf.p0, leaf.p1, leaf.p2);
+        if (prim < bvh.triangle_count) {
+          const auto tri = intersect_triangle(tri_ray, {t_min, reach()}, run.corner(0, i), run.corner(1, i), run.corner(2, i));
           if (!tri) continue;
-          h = {tri->t, leaf.prim, tri->b1, tri->b2};
+          h = {tri->t, prim, tri->b1, tri->b2};
         } else {
-          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, reach});
+          const auto shape = bvh.prims->intersect_shape(prim, ray, {t_min, reach()});
           if (!shape) continue;
           h = *shape;
         }
         if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
         if constexpr (kQuery == BvhQuery::kAny) return true;
         if constexpr (kQuery == BvhQuery::kFiltered) {
-          if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks(h)) return true;
+          if (!bvh.prims->filtered(prim, filter->sees_opaque) || filter->blocks(h)) return true;
           continue;
         }
         t_max = h.t;
@@ -266,24 +274,24 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     // Compute the leaves' primitives first.
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
-      const uint32_t first = node.first(i);
-      for (unsigned candidates = leaf_candidates(bvh, tri_ray, first, node.count(i)); candidates != 0;
+      const LeafRun run = bvh.leaf(node.first(i), node.count(i));
+      for (unsigned candidates = leaf_candidates(bvh, tri_ray, run, {t_min, t_max}); candidates != 0;
            candidates &= candidates - 1) {
-        const uint32_t k = first + uint32_t(std::countr_zero(candidates));
-        const LeafPrimitive& leaf = bvh.leaves[k];
+        const auto k = uint32_t(std::countr_zero(candidates));
+        const uint32_t prim = run.prim(k);
         if constexpr (kFiltered)
-          if (filter->ignores_transmissive && bvh.prims->transmissive(leaf.prim)) continue;
-        if (leaf.prim < bvh.triangle_count) {
-          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, leaf.p0, leaf.p1, leaf.p2);
+          if (filter->ignores_transmissive && bvh.prims->transmissive(prim)) continue;
+        if (prim < bvh.triangle_count) {
+          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, run.corner(0, k), run.corner(1, k), run.corner(2, k));
           if (!tri) continue;
           if constexpr (!kFiltered) return true;
-          if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks({tri->t, leaf.prim, tri->b1, tri->b2}))
+          if (!bvh.prims->filtered(prim, filter->sees_opaque) || filter->blocks({tri->t, prim, tri->b1, tri->b2}))
             return true;
         } else {
-          const auto shape = bvh.prims->intersect_shape(leaf.prim, ray, {t_min, t_max});
+          const auto shape = bvh.prims->intersect_shape(prim, ray, {t_min, t_max});
           if (!shape) continue;
           if constexpr (!kFiltered) return true;
-          if (!bvh.prims->filtered(leaf.prim, filter->sees_opaque) || filter->blocks(*shape)) return true;
+          if (!bvh.prims->filtered(prim, filter->sees_opaque) || filter->blocks(*shape)) return true;
         }
       }
     }
