@@ -45,10 +45,10 @@ bool is_valid_ray(const Ray& ray, Interval t_range) {
   return is_finite(ray.origin) && is_finite(ray.direction) && t_range.max > t_range.min;
 }
 
-/// A pending child: a node (count 0) or a leaf, and where the ray enters its box.
+/// A pending child: its word in the parent node (an inner node or a leaf, see BvhWideNode), and
+/// where the ray enters its box.
 struct StackEntry {
   uint32_t child;
-  uint32_t count;
   float t_enter;
 };
 
@@ -57,7 +57,10 @@ struct TraversalView {
   const BvhWideNode* nodes;
   const float* leaf_data;  // the LeafRuns
 
-  LeafRun leaf(uint32_t first, uint32_t count) const { return {leaf_data + size_t(first) * LeafRun::kLeafFloats, count}; }
+  /// The run of a leaf's child word.
+  LeafRun leaf(uint32_t word) const {
+    return {leaf_data + size_t(BvhWideNode::first_of(word)) * LeafRun::kLeafFloats, BvhWideNode::count_of(word)};
+  }
   const PrimitiveSet* prims;
   uint32_t triangle_count;
   bool only_triangles;  // no shapes: a leaf's entries need no check of their kind

@@ -38,9 +38,11 @@ struct alignas(32) BvhWideNode {
   /// The word of a leaf of `count` (1..7) primitives from `first`.
   static constexpr uint32_t leaf_word(uint32_t first, uint32_t count) { return kLeafFlag | first << kCountBits | count; }
   bool is_leaf(size_t i) const { return (child[i] & kLeafFlag) != 0; }
-  /// A leaf's first primitive and count.
-  uint32_t first(size_t i) const { return (child[i] & ~kLeafFlag) >> kCountBits; }
-  uint32_t count(size_t i) const { return child[i] & ((1u << kCountBits) - 1); }
+  /// A leaf's first primitive and count, from its word or its slot.
+  static constexpr uint32_t first_of(uint32_t word) { return (word & ~kLeafFlag) >> kCountBits; }
+  static constexpr uint32_t count_of(uint32_t word) { return word & ((1u << kCountBits) - 1); }
+  uint32_t first(size_t i) const { return first_of(child[i]); }
+  uint32_t count(size_t i) const { return count_of(child[i]); }
 };
 static_assert(sizeof(BvhWideNode) == 224);
 

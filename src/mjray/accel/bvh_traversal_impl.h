@@ -20,10 +20,11 @@ struct BoxRay {
   Lanes origin[3];
   Lanes inv_dir[3];
   Lanes far_scale;
+  Lanes t_min, t_max;  // the range boxes are cut to
   size_t near_row[3];  // row of BvhWideNode::bounds that the ray enters through, per axis
   size_t far_row[3];
 
-  explicit BoxRay(const Ray& ray) {
+  BoxRay(const Ray& ray, Interval t_range) : t_min(splat(t_range.min)), t_max(splat(t_range.max)) {
     for (int a = 0; a < 3; ++a) {
       const float d = ray.direction[a];
       const bool negative = std::signbit(d);  // −0 counts as negative, matching 1/−0 = −∞
@@ -34,6 +35,9 @@ struct BoxRay {
     }
     far_scale = splat(kFarScale);
   }
+
+  /// Cuts the range at a hit found.
+  void set_t_max(float t) { t_max = splat(t); }
 };
 
 // Slab test of a node's children against t in [t_min, t_max]: a bit per child hit, and each
@@ -41,8 +45,7 @@ struct BoxRay {
 // the origin on the slab plane (0·∞); the reductions keep their other operand then (as
 // max/min instructions do for NaN in the first operand), so such a slab does not cull: a
 // ray lying in a box's face may still hit what lies on it.
-inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_min, float t_max,
-                             std::array<float, kBvhWidth>& t_enter) {
+inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, std::array<float, kBvhWidth>& t_enter) {
   const auto& b = node.bounds;
   unsigned mask = 0;
 #if MJRAY_BVH_AVX
@@ -51,9 +54,9 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
     return _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(b[row].data()), r.origin[a]), r.inv_dir[a]);
   };
   const __m256 t_near = _mm256_max_ps(
-      slab(r.near_row[0], 0), _mm256_max_ps(slab(r.near_row[1], 1), _mm256_max_ps(slab(r.near_row[2], 2), _mm256_set1_ps(t_min))));
+      slab(r.near_row[0], 0), _mm256_max_ps(slab(r.near_row[1], 1), _mm256_max_ps(slab(r.near_row[2], 2), r.t_min)));
   const __m256 t_far = _mm256_min_ps(
-      slab(r.far_row[0], 0), _mm256_min_ps(slab(r.far_row[1], 1), _mm256_min_ps(slab(r.far_row[2], 2), _mm256_set1_ps(t_max))));
+      slab(r.far_row[0], 0), _mm256_min_ps(slab(r.far_row[1], 1), _mm256_min_ps(slab(r.far_row[2], 2), r.t_max)));
   _mm256_storeu_ps(t_enter.data(), t_near);
   mask = unsigned(_mm256_movemask_ps(_mm256_cmp_ps(t_near, _mm256_mul_ps(t_far, r.far_scale), _CMP_LE_OQ)));
 #elif defined(__SSE2__)
@@ -62,15 +65,15 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, float t_m
       return _mm_mul_ps(_mm_sub_ps(_mm_load_ps(&b[row][g]), r.origin[a]), r.inv_dir[a]);
     };
     const __m128 t_near = _mm_max_ps(
-        slab(r.near_row[0], 0), _mm_max_ps(slab(r.near_row[1], 1), _mm_max_ps(slab(r.near_row[2], 2), _mm_set1_ps(t_min))));
+        slab(r.near_row[0], 0), _mm_max_ps(slab(r.near_row[1], 1), _mm_max_ps(slab(r.near_row[2], 2), r.t_min)));
     const __m128 t_far = _mm_min_ps(
-        slab(r.far_row[0], 0), _mm_min_ps(slab(r.far_row[1], 1), _mm_min_ps(slab(r.far_row[2], 2), _mm_set1_ps(t_max))));
+        slab(r.far_row[0], 0), _mm_min_ps(slab(r.far_row[1], 1), _mm_min_ps(slab(r.far_row[2], 2), r.t_max)));
     _mm_storeu_ps(&t_enter[g], t_near);
     mask |= unsigned(_mm_movemask_ps(_mm_cmple_ps(t_near, _mm_mul_ps(t_far, r.far_scale)))) << g;
   }
 #else
   for (size_t i = 0; i < kBvhWidth; ++i) {
-    float t_near = t_min, t_far = t_max;
+    float t_near = r.t_min[0], t_far = r.t_max[0];
     for (int a = 0; a < 3; ++a) {
       const float t0 = (b[r.near_row[a]][i] - r.origin[a][0]) * r.inv_dir[a][0];
       const float t1 = (b[r.far_row[a]][i] - r.origin[a][0]) * r.inv_dir[a][0];
@@ -149,13 +152,13 @@ inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& r
 /// Asks for the memory of a stack entry (a node, or a leaf's primitives) to be loaded into the
 /// cache before it is needed.
 inline void prefetch(const TraversalView& bvh, const StackEntry& e) {
-  if (e.count == 0) {
+  if ((e.child & BvhWideNode::kLeafFlag) == 0) {
     const char* p = reinterpret_cast<const char*>(bvh.nodes + e.child);
     for (size_t at = 0; at < sizeof(BvhWideNode); at += 64) __builtin_prefetch(p + at);
   } else {
-    const LeafRun run = bvh.leaf(e.child, e.count);
+    const LeafRun run = bvh.leaf(e.child);
     __builtin_prefetch(run.data);
-    __builtin_prefetch(run.data + (e.count * LeafRun::kLeafFloats - 1));
+    __builtin_prefetch(run.data + (run.count * LeafRun::kLeafFloats - 1));
   }
 }
 
@@ -167,24 +170,21 @@ template <BvhQuery kQuery>
 bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) {
   const float t_min = t_range.min;
   float t_max = t_range.max;
-  const BoxRay box_ray(ray);
+  BoxRay box_ray(ray, t_range);
   const WatertightRay tri_ray(ray);
   bool found = false;
   StackEntry stack[kStackSize];
   int top = 0;
-  StackEntry current{0, 0, 0};
+  StackEntry current{0, 0};
   for (;;) {
-    if (current.count == 0) {
+    if ((current.child & BvhWideNode::kLeafFlag) == 0) {
       const BvhWideNode& node = bvh.nodes[current.child];
       std::array<float, kBvhWidth> t_enter;
-      unsigned mask = hit_children(node, box_ray, t_min, t_max, t_enter);
+      unsigned mask = hit_children(node, box_ray, t_enter);
       if (mask != 0) {
-        const auto entry = [&](int i) {
-          const size_t k = size_t(i);
-          return node.is_leaf(k) ? StackEntry{node.first(k), node.count(k), t_enter[k]}
-                                 : StackEntry{node.child[k], 0, t_enter[k]};
-        };
+        const auto entry = [&](int i) { return StackEntry{node.child[size_t(i)], t_enter[size_t(i)]}; };
         current = entry(std::countr_zero(mask));
+        prefetch(bvh, current);
         mask &= mask - 1;
         // Keep the nearest as `current`; the rest go on the stack sorted so that nearer
         // ones are popped first (insertion into the few entries pushed here).
@@ -202,7 +202,7 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
         continue;
       }
     } else {
-      const LeafRun run = bvh.leaf(current.child, current.count);
+      const LeafRun run = bvh.leaf(current.child);
       // Once something is hit, a primitive at exactly the same t may still win: the lower
       // primitive id does, as with every accelerator.
       const auto reach = [&] { return found ? next_float(t_max, true) : t_max; };
@@ -226,6 +226,7 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
           continue;
         }
         t_max = h.t;
+        box_ray.set_t_max(t_max);
         *hit = h;
         found = true;
       }
@@ -260,7 +261,7 @@ inline unsigned leaf_children(const BvhWideNode& node) {
 /// descended into, since a leaf may end the query at once.
 template <bool kFiltered>
 bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, HitFilter* filter) {
-  const BoxRay box_ray(ray);
+  const BoxRay box_ray(ray, t_range);
   const WatertightRay tri_ray(ray);
   const float t_min = t_range.min, t_max = t_range.max;
   uint32_t stack[kStackSize];
@@ -269,12 +270,12 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
   std::array<float, kBvhWidth> t_enter;
   for (;;) {
     const BvhWideNode& node = bvh.nodes[node_index];
-    const unsigned mask = hit_children(node, box_ray, t_min, t_max, t_enter);
+    const unsigned mask = hit_children(node, box_ray, t_enter);
     const unsigned leaves = leaf_children(node);
     // Compute the leaves' primitives first.
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
-      const LeafRun run = bvh.leaf(node.first(i), node.count(i));
+      const LeafRun run = bvh.leaf(node.child[i]);
       for (unsigned candidates = leaf_candidates(bvh, tri_ray, run, {t_min, t_max}); candidates != 0;
            candidates &= candidates - 1) {
         const auto k = uint32_t(std::countr_zero(candidates));
