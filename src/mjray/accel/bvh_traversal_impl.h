@@ -87,22 +87,32 @@ inline unsigned hit_children(const BvhWideNode& node, const BoxRay& r, std::arra
   return mask;
 }
 
-/// The primitives of a leaf run (count ≤ 4) that need the full test for t in `t_range`: a bit
-/// per entry. A triangle is left out only where the watertight test would reject it: its edge
-/// functions, determinant and distance are computed here for four triangles at once, with the
-/// same float operations in the same order as intersect_triangle, and it is dropped only when
-/// one of that test's float checks fails and no edge function is zero (zero sends
-/// intersect_triangle to its double fallback). Shapes always need their test.
-inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& ray, const LeafRun& run, Interval t_range) {
-#if defined(__SSE2__)
+/// What the four-wide test of a leaf run (count ≤ 4) finds, a bit or a lane per entry.
+struct LeafLanes {
+  unsigned hits = 0;       ///< triangles that pass every float check of the watertight test here
+  unsigned full_test = 0;  ///< entries only the full test decides: shapes, and zero edge functions
+  // For the hits: the distance and barycentrics, and what the range and error checks need.
+  alignas(16) std::array<float, 4> t, b1, b2, t_scaled, det, max_z, max_xt, max_yt, max_e;
+};
+
+/// Runs the watertight test on a leaf run's triangles four at once for t in `t_range`, with the
+/// same float operations in the same order as intersect_triangle, so a triangle counts as a
+/// hit (pending the error bound, left to leaf_entry_hit) exactly when that test's float checks
+/// would pass. Triangles with an edge function of zero are left to the full test, whose double
+/// fallback decides them, and so are shapes.
+inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const LeafRun& run, Interval t_range,
+                      LeafLanes& out) {
   const unsigned all = (1u << run.count) - 1;
-  if (run.count < 2) return all;
+#if defined(__SSE2__)
   unsigned shapes = 0;
   if (!bvh.only_triangles) {
     for (uint32_t i = 0; i < run.count; ++i) shapes |= unsigned(run.prim(i) >= bvh.triangle_count) << i;
-    if (shapes == all) return all;
+    if (shapes == all) {
+      out.full_test = all;
+      return;
+    }
   }
-  // Lanes past the run's count hold the next row's floats: they are masked off at the end.
+  // Lanes past the run's count hold the next row's floats: they are masked off.
   const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
   const size_t corner_rows = 3 * size_t(run.count);
   const float* x0 = run.data + size_t(kx) * run.count;
@@ -140,13 +150,53 @@ inline unsigned leaf_candidates(const TraversalView& bvh, const WatertightRay& r
   const __m128 out_of_range = _mm_or_ps(
       _mm_and_ps(_mm_cmplt_ps(det, zero), _mm_or_ps(_mm_cmpge_ps(t_scaled, min_det), _mm_cmplt_ps(t_scaled, max_det))),
       _mm_and_ps(_mm_cmpgt_ps(det, zero), _mm_or_ps(_mm_cmple_ps(t_scaled, min_det), _mm_cmpgt_ps(t_scaled, max_det))));
+  const unsigned zero_edges = unsigned(_mm_movemask_ps(zeroes)) & all;
+  out.full_test = shapes | zero_edges;
   const __m128 fails = _mm_or_ps(_mm_or_ps(outside, no_det), out_of_range);
-  const unsigned rejected = unsigned(_mm_movemask_ps(_mm_andnot_ps(zeroes, fails)));
-  return all & (~rejected | shapes);
+  const unsigned passing = ~unsigned(_mm_movemask_ps(fails)) & all & ~out.full_test;
+  if (passing == 0) return;
+  // The distance is above t_min and finite.
+  const __m128 inv_det = _mm_div_ps(_mm_set1_ps(1.f), det);
+  const __m128 t = _mm_mul_ps(t_scaled, inv_det);
+  const __m128 ahead = _mm_and_ps(_mm_cmpgt_ps(t, t_min), _mm_cmpeq_ps(_mm_sub_ps(t, t), zero));
+  out.hits = passing & unsigned(_mm_movemask_ps(ahead));
+  if (out.hits == 0) return;
+  const __m128 sign = _mm_set1_ps(-0.f);
+  const auto largest = [&](__m128 a, __m128 b, __m128 c) {
+    return _mm_max_ps(_mm_max_ps(_mm_andnot_ps(sign, a), _mm_andnot_ps(sign, b)), _mm_andnot_ps(sign, c));
+  };
+  _mm_store_ps(out.t.data(), t);
+  _mm_store_ps(out.b1.data(), _mm_mul_ps(e1, inv_det));
+  _mm_store_ps(out.b2.data(), _mm_mul_ps(e2, inv_det));
+  _mm_store_ps(out.t_scaled.data(), t_scaled);
+  _mm_store_ps(out.det.data(), det);
+  _mm_store_ps(out.max_z.data(), largest(az, bz, cz));
+  _mm_store_ps(out.max_xt.data(), largest(ax, bx, cx));
+  _mm_store_ps(out.max_yt.data(), largest(ay, by, cy));
+  _mm_store_ps(out.max_e.data(), largest(e0, e1, e2));
 #else
   (void)bvh, (void)ray, (void)t_range;
-  return (1u << run.count) - 1;
+  out.full_test = all;
 #endif
+}
+
+/// Entry i's hit for t in `t_range` (within the range test_leaf was given), exactly as
+/// intersect_triangle or the shape's own test finds it.
+inline std::optional<Hit> leaf_entry_hit(const TraversalView& bvh, const Ray& ray, const WatertightRay& tri_ray,
+                                         const LeafRun& run, const LeafLanes& lanes, uint32_t i, Interval t_range) {
+  const uint32_t prim = run.prim(i);
+  if ((lanes.hits >> i & 1) != 0) {
+    // The range may have shrunk since the leaf was tested.
+    if (!scaled_distance_in_range(lanes.t_scaled[i], lanes.det[i], t_range) ||
+        !clears_rounding_error(lanes.t[i], lanes.det[i], tri_ray.sz, lanes.max_z[i], lanes.max_xt[i], lanes.max_yt[i],
+                               lanes.max_e[i]))
+      return std::nullopt;
+    return Hit{lanes.t[i], prim, lanes.b1[i], lanes.b2[i]};
+  }
+  if (prim >= bvh.triangle_count) return bvh.prims->intersect_shape(prim, ray, t_range);
+  const auto tri = intersect_triangle(tri_ray, t_range, run.corner(0, i), run.corner(1, i), run.corner(2, i));
+  if (!tri) return std::nullopt;
+  return Hit{tri->t, prim, tri->b1, tri->b2};
 }
 
 /// Asks for the memory of a stack entry (a node, or a leaf's primitives) to be loaded into the
@@ -206,23 +256,17 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
       // Once something is hit, a primitive at exactly the same t may still win: the lower
       // primitive id does, as with every accelerator.
       const auto reach = [&] { return found ? next_float(t_max, true) : t_max; };
-      for (unsigned m = leaf_candidates(bvh, tri_ray, run, {t_min, reach()}); m != 0; m &= m - 1) {
+      LeafLanes lanes;
+      test_leaf(bvh, tri_ray, run, {t_min, reach()}, lanes);
+      for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
         const auto i = uint32_t(std::countr_zero(m));
-        const uint32_t prim = run.prim(i);
-        Hit h;
-        if (prim < bvh.triangle_count) {
-          const auto tri = intersect_triangle(tri_ray, {t_min, reach()}, run.corner(0, i), run.corner(1, i), run.corner(2, i));
-          if (!tri) continue;
-          h = {tri->t, prim, tri->b1, tri->b2};
-        } else {
-          const auto shape = bvh.prims->intersect_shape(prim, ray, {t_min, reach()});
-          if (!shape) continue;
-          h = *shape;
-        }
+        const auto found_hit = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, i, {t_min, reach()});
+        if (!found_hit) continue;
+        const Hit& h = *found_hit;
         if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
         if constexpr (kQuery == BvhQuery::kAny) return true;
         if constexpr (kQuery == BvhQuery::kFiltered) {
-          if (!bvh.prims->filtered(prim, filter->sees_opaque) || filter->blocks(h)) return true;
+          if (!bvh.prims->filtered(h.prim, filter->sees_opaque) || filter->blocks(h)) return true;
           continue;
         }
         t_max = h.t;
@@ -276,24 +320,16 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
       const LeafRun run = bvh.leaf(node.child[i]);
-      for (unsigned candidates = leaf_candidates(bvh, tri_ray, run, {t_min, t_max}); candidates != 0;
-           candidates &= candidates - 1) {
-        const auto k = uint32_t(std::countr_zero(candidates));
-        const uint32_t prim = run.prim(k);
+      LeafLanes lanes;
+      test_leaf(bvh, tri_ray, run, {t_min, t_max}, lanes);
+      for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
+        const auto k = uint32_t(std::countr_zero(m));
         if constexpr (kFiltered)
-          if (filter->ignores_transmissive && bvh.prims->transmissive(prim)) continue;
-        if (prim < bvh.triangle_count) {
-          const auto tri = intersect_triangle(tri_ray, {t_min, t_max}, run.corner(0, k), run.corner(1, k), run.corner(2, k));
-          if (!tri) continue;
-          if constexpr (!kFiltered) return true;
-          if (!bvh.prims->filtered(prim, filter->sees_opaque) || filter->blocks({tri->t, prim, tri->b1, tri->b2}))
-            return true;
-        } else {
-          const auto shape = bvh.prims->intersect_shape(prim, ray, {t_min, t_max});
-          if (!shape) continue;
-          if constexpr (!kFiltered) return true;
-          if (!bvh.prims->filtered(prim, filter->sees_opaque) || filter->blocks(*shape)) return true;
-        }
+          if (filter->ignores_transmissive && bvh.prims->transmissive(run.prim(k))) continue;
+        const auto h = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, k, {t_min, t_max});
+        if (!h) continue;
+        if constexpr (!kFiltered) return true;
+        if (!bvh.prims->filtered(h->prim, filter->sees_opaque) || filter->blocks(*h)) return true;
       }
     }
     // Then descend: the first inner child next, the others later.

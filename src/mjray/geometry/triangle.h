@@ -52,6 +52,33 @@ struct WatertightRay {
   }
 };
 
+/// Whether the scaled distance t·det of a hit lies in (t_range.min, t_range.max], decided before
+/// dividing: the watertight test's range check, shared with accelerators' SIMD leaf tests.
+[[gnu::always_inline]] inline bool scaled_distance_in_range(float t_scaled, float det, Interval t_range) {
+  if (det < 0 && (t_scaled >= t_range.min * det || t_scaled < t_range.max * det)) return false;
+  if (det > 0 && (t_scaled <= t_range.min * det || t_scaled > t_range.max * det)) return false;
+  return true;
+}
+
+/// Whether a hit's t exceeds the bound on its rounding error (pbrt-v4), so that it cannot lie at
+/// or behind the origin: a ray leaving a surface then never re-hits it, however large the
+/// triangle is against its offset. The arguments are the largest magnitudes of the sheared
+/// corners' z, x and y, and of the edge functions. (In double: a tiny direction component makes
+/// these products overflow a float.) The shear's error scales with the unscaled z; t's with the
+/// scaled one.
+[[gnu::always_inline]] inline bool clears_rounding_error(float t, float det, float sz, float max_z_f, float max_xt_f,
+                                                         float max_yt_f, float max_e_f) {
+  using namespace triangle_error;
+  const double max_z = max_z_f, max_xt = max_xt_f, max_yt = max_yt_f, max_e = max_e_f;
+  const double max_zt = max_z * double(std::abs(sz));
+  const double delta_z = gamma3 * max_zt;
+  const double delta_x = gamma5 * (max_xt + max_z);
+  const double delta_y = gamma5 * (max_yt + max_z);
+  const double delta_e = 2 * (gamma2 * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+  const double delta_t = 3 * (gamma3 * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / std::abs(double(det));
+  return double(t) > delta_t;
+}
+
 /// The hit of the prepared ray with triangle (p0, p1, p2) for t in (t_range.min, t_range.max]
 /// (a hit exactly at max counts), or nothing.
 /// Inline so that accelerators' leaf loops share exactly this arithmetic (and so the same
@@ -60,7 +87,6 @@ struct WatertightRay {
                                                      const std::array<float, 3>& p0,
                                                      const std::array<float, 3>& p1,
                                                      const std::array<float, 3>& p2) {
-  using namespace triangle_error;
   if (!ray.valid) return std::nullopt;
   const int kx = ray.kx, ky = ray.ky, kz = ray.kz;
   const auto& o = ray.origin;
@@ -88,30 +114,16 @@ struct WatertightRay {
 
   // Compute the scaled distance and reject hits outside the range before dividing.
   const float t_scaled = e0 * (az * ray.sz) + e1 * (bz * ray.sz) + e2 * (cz * ray.sz);
-  const float t_min = t_range.min, t_max = t_range.max;
-  if (det < 0 && (t_scaled >= t_min * det || t_scaled < t_max * det)) return std::nullopt;
-  if (det > 0 && (t_scaled <= t_min * det || t_scaled > t_max * det)) return std::nullopt;
+  if (!scaled_distance_in_range(t_scaled, det, t_range)) return std::nullopt;
 
   const float inv_det = 1 / det;
   const float t = t_scaled * inv_det;
-  if (!(t > t_min) || !std::isfinite(t)) return std::nullopt;
-
-  // Compute a bound δt on the rounding error of t (pbrt-v4) and reject hits that may lie at
-  // or behind the origin: a ray leaving a surface then never re-hits it, however large the
-  // triangle is against its offset.
-  // (In double: a tiny direction component makes these products overflow a float.)
-  // The shear's error scales with the unscaled z; t's with the scaled one.
-  const double max_z = std::max({std::abs(az), std::abs(bz), std::abs(cz)});
-  const double max_zt = max_z * double(std::abs(ray.sz));
-  const double max_xt = std::max({std::abs(ax), std::abs(bx), std::abs(cx)});
-  const double max_yt = std::max({std::abs(ay), std::abs(by), std::abs(cy)});
-  const double delta_z = gamma3 * max_zt;
-  const double delta_x = gamma5 * (max_xt + max_z);
-  const double delta_y = gamma5 * (max_yt + max_z);
-  const double delta_e = 2 * (gamma2 * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-  const double max_e = std::max({std::abs(e0), std::abs(e1), std::abs(e2)});
-  const double delta_t = 3 * (gamma3 * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / std::abs(double(det));
-  if (!(double(t) > delta_t)) return std::nullopt;
+  if (!(t > t_range.min) || !std::isfinite(t)) return std::nullopt;
+  if (!clears_rounding_error(t, det, ray.sz, std::max({std::abs(az), std::abs(bz), std::abs(cz)}),
+                             std::max({std::abs(ax), std::abs(bx), std::abs(cx)}),
+                             std::max({std::abs(ay), std::abs(by), std::abs(cy)}),
+                             std::max({std::abs(e0), std::abs(e1), std::abs(e2)})))
+    return std::nullopt;
   return TriangleHit{t, e1 * inv_det, e2 * inv_det};
 }
 
