@@ -136,9 +136,12 @@ inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const 
   const __m128 zero = _mm_setzero_ps();
   const auto any = [](__m128 a, __m128 b, __m128 c) { return _mm_or_ps(_mm_or_ps(a, b), c); };
   const __m128 zeroes = any(_mm_cmpeq_ps(e0, zero), _mm_cmpeq_ps(e1, zero), _mm_cmpeq_ps(e2, zero));
-  // The edge functions have strictly mixed signs.
+  out.full_test = shapes | (unsigned(_mm_movemask_ps(zeroes)) & all);
+  // The edge functions have strictly mixed signs: most leaves end here.
   const __m128 outside = _mm_and_ps(any(_mm_cmplt_ps(e0, zero), _mm_cmplt_ps(e1, zero), _mm_cmplt_ps(e2, zero)),
                                     any(_mm_cmpgt_ps(e0, zero), _mm_cmpgt_ps(e1, zero), _mm_cmpgt_ps(e2, zero)));
+  const unsigned inside = ~unsigned(_mm_movemask_ps(outside)) & all & ~out.full_test;
+  if (inside == 0) return;
   // The determinant is zero or not finite (x − x is 0 only for finite x).
   const __m128 det = _mm_add_ps(_mm_add_ps(e0, e1), e2);
   const __m128 no_det = _mm_or_ps(_mm_cmpeq_ps(det, zero), _mm_cmpneq_ps(_mm_sub_ps(det, det), zero));
@@ -150,10 +153,7 @@ inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const 
   const __m128 out_of_range = _mm_or_ps(
       _mm_and_ps(_mm_cmplt_ps(det, zero), _mm_or_ps(_mm_cmpge_ps(t_scaled, min_det), _mm_cmplt_ps(t_scaled, max_det))),
       _mm_and_ps(_mm_cmpgt_ps(det, zero), _mm_or_ps(_mm_cmple_ps(t_scaled, min_det), _mm_cmpgt_ps(t_scaled, max_det))));
-  const unsigned zero_edges = unsigned(_mm_movemask_ps(zeroes)) & all;
-  out.full_test = shapes | zero_edges;
-  const __m128 fails = _mm_or_ps(_mm_or_ps(outside, no_det), out_of_range);
-  const unsigned passing = ~unsigned(_mm_movemask_ps(fails)) & all & ~out.full_test;
+  const unsigned passing = inside & ~unsigned(_mm_movemask_ps(_mm_or_ps(no_det, out_of_range)));
   if (passing == 0) return;
   // The distance is above t_min and finite.
   const __m128 inv_det = _mm_div_ps(_mm_set1_ps(1.f), det);
