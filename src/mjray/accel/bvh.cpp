@@ -56,14 +56,11 @@ struct StackEntry {
 struct TraversalView {
   const BvhWideNode* nodes;
   const float* leaf_data;  // the LeafRuns
-
-  /// The run of a leaf's child word.
-  LeafRun leaf(uint32_t word) const {
-    return {leaf_data + size_t(BvhWideNode::first_of(word)) * LeafRun::kLeafFloats, BvhWideNode::count_of(word)};
-  }
   const PrimitiveSet* prims;
   uint32_t triangle_count;
   bool only_triangles;  // no shapes: a leaf's entries need no check of their kind
+
+  LeafRun leaf(uint32_t word) const { return LeafRun::of(leaf_data, word); }
 };
 
 namespace baseline {
@@ -186,7 +183,7 @@ std::optional<size_t> Bvh::region_primitives(const LightPyramid& region, uint32_
         continue;
       }
       // A leaf: each primitive not surely outside is a candidate.
-      const LeafRun run{leaf_data_.data() + size_t(node.first(i)) * LeafRun::kLeafFloats, node.count(i)};
+      const LeafRun run = LeafRun::of(leaf_data_.data(), node.child[i]);
       for (uint32_t k = 0; k < run.count; ++k) {
         const uint32_t prim = run.prim(k);
         if (prim == ignore) continue;

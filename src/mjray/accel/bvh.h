@@ -62,6 +62,11 @@ struct LeafRun {
   const float* data;  ///< the run's first float
   uint32_t count;     ///< primitives in the run
 
+  /// The run a leaf's child word (BvhWideNode::leaf_word) names in the BVH's leaf data.
+  static LeafRun of(const float* leaf_data, uint32_t word) {
+    return {leaf_data + size_t(BvhWideNode::first_of(word)) * kLeafFloats, BvhWideNode::count_of(word)};
+  }
+
   /// Row `row` (coordinate 3·corner + axis, or kIdRow): `count` floats.
   const float* row(uint32_t row) const { return data + row * count; }
   uint32_t prim(uint32_t i) const { return std::bit_cast<uint32_t>(row(kIdRow)[i]); }

@@ -322,8 +322,8 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
       const LeafRun run = bvh.leaf(node.child[i]);
       LeafLanes lanes;
       test_leaf(bvh, tri_ray, run, {t_min, t_max}, lanes);
-      for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
-        const auto k = uint32_t(std::countr_zero(m));
+      for (unsigned entries = lanes.hits | lanes.full_test; entries != 0; entries &= entries - 1) {
+        const auto k = uint32_t(std::countr_zero(entries));
         if constexpr (kFiltered)
           if (filter->ignores_transmissive && bvh.prims->transmissive(run.prim(k))) continue;
         const auto h = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, k, {t_min, t_max});
