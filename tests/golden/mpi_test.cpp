@@ -32,6 +32,17 @@ using test::write_file;
 std::vector<std::string> mpirun(int ranks) {
   std::vector<std::string> args = {test::mpiexec()->string(), "--quiet", "--oversubscribe"};
   if (geteuid() == 0) args.push_back("--allow-run-as-root");
+  // Each test process keeps Open MPI's session files in a folder of its own: two jobs sharing
+  // /tmp's can fail to start when one removes the shared folder as the other creates its own.
+  struct SessionBase {
+    const std::filesystem::path dir = test::make_temp_dir("ompi");
+    ~SessionBase() {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  };
+  static const SessionBase session_base;
+  args.insert(args.end(), {"--mca", "orte_tmpdir_base", session_base.dir.string()});
   // Under the asan preset: Open MPI 4.1 itself leaks in MPI_Init/MPI_Finalize (open-mpi/ompi
   // #10048, #12584), often from components it has already unloaded, so no suppression can name
   // them. The ranks keep every other check; mjray's own tests check the shared code for leaks.
