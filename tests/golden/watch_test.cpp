@@ -362,5 +362,20 @@ TEST_F(GoldenWatch, AnotherAddressIsServedWithAWarningAndBadOptionsExitTwo) {
   EXPECT_EQ(run(mjray + "--watch --resume" + scene), 2);
 }
 
+TEST_F(GoldenWatch, WithoutItsHttpModuleAProgramStillRendersAndTheWatchSaysWhyItCannotServe) {
+  write("scene.lua", sphere_scene("{0.8, 0.2, 0.2}"));
+  // A copy of the program alone in a folder: mjray-http.so is not beside it.
+  const fs::path lone = dir_ / "alone" / "mjray";
+  fs::create_directories(lone.parent_path());
+  fs::copy_file(test::mjray_binary(), lone);
+  const std::string scene = std::string(" ").append(quoted(dir_ / "scene.lua"));
+  EXPECT_EQ(run(quoted(lone) + " --quiet" + scene), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "out.png"));
+  const fs::path log = dir_ / "alone.txt";
+  EXPECT_EQ(run(quoted(lone) + " --watch --port 0" + scene + " 2>" + quoted(log)), 1) << test::read_file(log);
+  EXPECT_NE(test::read_file(log).find("cannot start the live preview: its HTTP module did not load"), std::string::npos)
+      << test::read_file(log);
+}
+
 }  // namespace
 }  // namespace mjray

@@ -2,11 +2,13 @@
 /// The live page's HTTP server. It answers exactly three kinds of GET request from a
 /// LiveState: the page (/), the status and statistics (/stats.json) and the current image of
 /// frame N (/frame/N.png); everything else is 404. No part of a request names a file: the
-/// page is compiled into the program and the images live in memory.
+/// page is compiled into the program and the images live in memory. The serving itself is
+/// the HTTP module's (http_module.h), loaded at the first server.
 
 #include <memory>
 #include <string>
 
+#include "http_module.h"
 #include "live_state.h"
 
 namespace mjray {
@@ -16,7 +18,7 @@ class PreviewServer {
  public:
   /// Listens on `address` (a numeric IP address) at `port`, or the next free port of the
   /// kPortsTried from it; port 0 takes any free port. Throws OutputError when it cannot.
-  /// `state` must outlive the server.
+  /// Throws OutputError too when the module is missing. `state` must outlive the server.
   PreviewServer(const LiveState& state, const std::string& address, int port);
   ~PreviewServer();
   PreviewServer(const PreviewServer&) = delete;
@@ -30,14 +32,9 @@ class PreviewServer {
   static constexpr int kPortsTried = 20;
 
  private:
-  struct Server;
-  std::unique_ptr<Server> server_;
+  std::unique_ptr<HttpListener> listener_;
   std::string address_;
   int port_ = 0;
 };
-
-/// Whether `address` (numeric IPv4 or IPv6) is a loopback address, reachable only from
-/// this machine.
-bool is_loopback_address(const std::string& address);
 
 }  // namespace mjray
