@@ -11,34 +11,33 @@ namespace mjray {
 
 /// The top three rows of an affine matrix. The arithmetic is that of Transform (double
 /// products summed left to right, then rounded to float), so both give the same floats.
+/// The rows are stored by column in four-lane vectors (the fourth lane unused): one input
+/// coordinate's products for all three outputs are one SIMD multiply, with the same
+/// operations in the same order as one row at a time (shape tests map every ray they see).
 struct AffineMap {
-  std::array<std::array<double, 4>, 3> m{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}};
+  using Lanes = double __attribute__((vector_size(4 * sizeof(double))));
+  std::array<Lanes, 4> column{Lanes{1, 0, 0, 0}, Lanes{0, 1, 0, 0}, Lanes{0, 0, 1, 0}, Lanes{0, 0, 0, 0}};
 
   AffineMap() = default;
   explicit AffineMap(const Matrix4& matrix) {
-    for (size_t i = 0; i < 3; ++i) m[i] = matrix.m[i];
+    for (size_t j = 0; j < 4; ++j) column[j] = Lanes{matrix.m[0][j], matrix.m[1][j], matrix.m[2][j], 0};
   }
 
   Point3 operator()(const Point3& p) const {
-    const double x = p.x, y = p.y, z = p.z;
-    return {float(m[0][0] * x + m[0][1] * y + m[0][2] * z + m[0][3]),
-            float(m[1][0] * x + m[1][1] * y + m[1][2] * z + m[1][3]),
-            float(m[2][0] * x + m[2][1] * y + m[2][2] * z + m[2][3])};
+    const Lanes out = column[0] * double(p.x) + column[1] * double(p.y) + column[2] * double(p.z) + column[3];
+    return {float(out[0]), float(out[1]), float(out[2])};
   }
   Vector3 operator()(const Vector3& v) const {
-    const double x = v.x, y = v.y, z = v.z;
-    return {float(m[0][0] * x + m[0][1] * y + m[0][2] * z),
-            float(m[1][0] * x + m[1][1] * y + m[1][2] * z),
-            float(m[2][0] * x + m[2][1] * y + m[2][2] * z)};
+    const Lanes out = column[0] * double(v.x) + column[1] * double(v.y) + column[2] * double(v.z);
+    return {float(out[0]), float(out[1]), float(out[2])};
   }
   Ray operator()(const Ray& r) const { return {(*this)(r.origin), (*this)(r.direction)}; }
   /// A normal of the map's source frame carried back by the transpose: for the map
   /// object_from_world this takes object-space normals to world space.
   Normal3 transpose_apply(const Normal3& n) const {
     const double x = n.x, y = n.y, z = n.z;
-    return {float(m[0][0] * x + m[1][0] * y + m[2][0] * z),
-            float(m[0][1] * x + m[1][1] * y + m[2][1] * z),
-            float(m[0][2] * x + m[1][2] * y + m[2][2] * z)};
+    const auto dot = [&](const Lanes& c) { return float(c[0] * x + c[1] * y + c[2] * z); };
+    return {dot(column[0]), dot(column[1]), dot(column[2])};
   }
 };
 
