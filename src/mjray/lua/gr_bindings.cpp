@@ -6,10 +6,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <new>
-#include <set>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
 
 extern "C" {
 #include <lauxlib.h>
@@ -263,9 +263,10 @@ class Snapshot {
     return copy;
   }
 
-  std::map<const LuaNode*, std::shared_ptr<const SceneNode>> done_;
-  std::map<const Material*, std::shared_ptr<const Material>> materials_;
-  std::set<const LuaNode*> in_progress_;
+  // Hashed: a scene of 8,000 nodes looks each up several times.
+  std::unordered_map<const LuaNode*, std::shared_ptr<const SceneNode>> done_;
+  std::unordered_map<const Material*, std::shared_ptr<const Material>> materials_;
+  std::unordered_set<const LuaNode*> in_progress_;
 };
 
 /// Checks the camera here so that the error names the gr.render line; the tests mirror
@@ -292,7 +293,7 @@ void check_camera(const RenderJob& job) {
 /// The first node under `root` (depth first, each node once) made by old-skeleton geometry.
 const LuaNode* find_old_skeleton_geometry(const LuaNode& root) {
   std::vector<const LuaNode*> pending = {&root};
-  std::set<const LuaNode*> seen;
+  std::unordered_set<const LuaNode*> seen;
   while (!pending.empty()) {
     const LuaNode* node = pending.back();
     pending.pop_back();
