@@ -24,22 +24,20 @@ namespace mjray {
 
 namespace lua {
 
+// The context lives in the state's extra space (copied into every coroutine Lua makes), not
+// in the registry: the bindings ask for it on every call, and a registry lookup is a hashed
+// string key each time.
 namespace {
-constexpr const char* kContextKey = "mjray.context";
-}
+LoaderContext*& context_slot(lua_State* L) { return *static_cast<LoaderContext**>(lua_getextraspace(L)); }
+}  // namespace
 
 LoaderContext& context(lua_State* L) {
-  lua_getfield(L, LUA_REGISTRYINDEX, kContextKey);
-  auto* ctx = static_cast<LoaderContext*>(lua_touserdata(L, -1));
-  lua_pop(L, 1);
+  LoaderContext* ctx = context_slot(L);
   MJRAY_CHECK(ctx != nullptr);
   return *ctx;
 }
 
-void set_context(lua_State* L, LoaderContext* ctx) {
-  lua_pushlightuserdata(L, ctx);
-  lua_setfield(L, LUA_REGISTRYINDEX, kContextKey);
-}
+void set_context(lua_State* L, LoaderContext* ctx) { context_slot(L) = ctx; }
 
 FileLocation caller_location(lua_State* L) {
   // Level 1 is the running C function's caller; skip C frames (e.g. pcall) to the Lua line.
