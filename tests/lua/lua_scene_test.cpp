@@ -121,6 +121,24 @@ TEST_F(LuaScene, SphereAndCubeAreUnitPrimitives) {
   EXPECT_EQ(children[1]->where.line, 3);
 }
 
+TEST_F(LuaScene, NodesMadeAndRenderedInsideACoroutineAreTheScene) {
+  // The bindings find their context through the running thread: a coroutine is another one.
+  const auto scene = load(
+      "local build = coroutine.wrap(function()\n"
+      "  root = gr.node('root')\n"
+      "  coroutine.yield()\n"
+      "  root:add_child(gr.sphere('ball'))\n" +
+      render_call() +
+      "end)\n"
+      "build()\n"
+      "build()\n");
+  ASSERT_EQ(scene.jobs.size(), 1u);
+  const auto& children = scene.jobs[0].root->children;
+  ASSERT_EQ(children.size(), 1u);
+  EXPECT_EQ(children[0]->name, "ball");
+  EXPECT_EQ(children[0]->where.line, 4);
+}
+
 TEST_F(LuaScene, NhSpherePlacesTheUnitSphereByCentreAndRadius) {
   const auto scene = load("root = gr.nh_sphere('s', {1, 2, 3}, 2)\n" + render_call());
   const SceneNode& s = *scene.jobs[0].root;
