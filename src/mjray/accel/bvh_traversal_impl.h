@@ -182,8 +182,10 @@ inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const 
 
 /// Entry i's hit for t in `t_range` (within the range test_leaf was given), exactly as
 /// intersect_triangle or the shape's own test finds it.
-[[gnu::always_inline]] inline std::optional<Hit> leaf_entry_hit(const TraversalView& bvh, const Ray& ray, const WatertightRay& tri_ray,
-                                         const LeafRun& run, const LeafLanes& lanes, uint32_t i, Interval t_range) {
+/// Always inlined: its shape branch is large enough that GCC would otherwise call it.
+[[gnu::always_inline]] inline std::optional<Hit> leaf_entry_hit(const TraversalView& bvh, const Ray& ray,
+                                                                const WatertightRay& tri_ray, const LeafRun& run,
+                                                                const LeafLanes& lanes, uint32_t i, Interval t_range) {
   const uint32_t prim = run.prim(i);
   if ((lanes.hits >> i & 1) != 0) {
     // The range may have shrunk since the leaf was tested.

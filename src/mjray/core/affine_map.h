@@ -27,7 +27,7 @@ struct AffineMap {
   Point3 operator()(const Point3& p) const {
     Lanes c0, c1, c2, c3;
     load_columns(c0, c1, c2);
-    std::memcpy(&c3, column[3].data(), sizeof c3);
+    std::memcpy(&c3, column[3].data(), sizeof c3);  // the offsets: points only
     const Lanes out = c0 * double(p.x) + c1 * double(p.y) + c2 * double(p.z) + c3;
     return {float(out[0]), float(out[1]), float(out[2])};
   }
