@@ -103,7 +103,7 @@ Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
   // Each structure is released as soon as the next is made: the build's peak memory is the
   // mesh scene's peak.
   BvhBuildResult built = build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
-                                   {.threads = threads});
+                                   {.threads = threads, .shapes_from = triangle_count_});
   nodes_ = collapse_to_wide(built.nodes);
   if (!built.nodes.empty()) {
     const BvhNode& root = built.nodes.front();

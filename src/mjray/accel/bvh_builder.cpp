@@ -90,6 +90,7 @@ struct Extent {
 struct Bin {
   Box4 box;
   uint32_t count = 0;
+  uint32_t shapes = 0;  // how many of count are analytic shapes
 };
 /// Bins per axis; only the first Binner::count of each row are used. Left uninitialised for
 /// speed: find_split resets the ones it uses.
@@ -211,7 +212,15 @@ class Builder {
     int axis = -1;
     int bin = 0;  // left side: bins [0, bin)
     float cost = kInfinity;
+    float node_tests = 0;  // the node's primitives in triangle tests: its leaf cost per area
   };
+
+  bool is_shape(const BuildRef& r) const { return r.prim() >= options_.shapes_from; }
+  // The cost of testing `count` primitives of which `shapes` are shapes, in triangle tests
+  // (exactly float(count) without shapes).
+  float tests(uint32_t count, uint32_t shapes) const {
+    return float(count) + (options_.shape_cost - 1) * float(shapes);
+  }
 
   // A node's `count` when it stands for the root of forked subtree number `offset`.
   static constexpr uint16_t kForked = 0xffff;
@@ -242,7 +251,7 @@ class Builder {
     if (!use_median) {
       const Binner binner(centroids, n);
       const Split split = find_split(begin, end, binner);
-      const float leaf_cost = float(n) * extent.box.half_area();
+      const float leaf_cost = split.node_tests * extent.box.half_area();
       if (n <= uint32_t(options_.max_leaf_size) && leaf_cost <= split.cost) return make_leaf();
       if (split.axis < 0) {
         use_median = true;
@@ -341,6 +350,7 @@ class Builder {
         Bin& b = to[axis][size_t(at[axis])];
         b.box.grow(ref);
         ++b.count;
+        b.shapes += is_shape(ref);
       }
     };
     // Neighbouring refs mostly fall in the same bins; alternating between two sets of bins
@@ -366,6 +376,7 @@ class Builder {
       for (size_t b = 0; b < size_t(count); ++b) {
         into[a][b].box.grow(from[a][b].box);
         into[a][b].count += from[a][b].count;
+        into[a][b].shapes += from[a][b].shapes;
       }
   }
 
@@ -396,29 +407,34 @@ class Builder {
     }
 
     Split best;
+    uint32_t node_shapes = 0;  // every ref is in one bin of each axis
+    for (int b = 0; b < count; ++b) node_shapes += bins[0][size_t(b)].shapes;
+    best.node_tests = tests(n, node_shapes);
     for (int axis = 0; axis < 3; ++axis) {
       if (!(binner.scale[axis] > 0)) continue;
       const auto& axis_bins = bins[size_t(axis)];
       // Compute the right-hand costs, then sweep from the left.
       std::array<float, kBins> right_cost;
       Box4 right;
-      uint32_t right_count = 0;
+      uint32_t right_count = 0, right_shapes = 0;
       for (int b = count - 1; b > 0; --b) {
         right.grow(axis_bins[size_t(b)].box);
         right_count += axis_bins[size_t(b)].count;
-        right_cost[size_t(b)] = right.half_area() * float(right_count);
+        right_shapes += axis_bins[size_t(b)].shapes;
+        right_cost[size_t(b)] = right.half_area() * tests(right_count, right_shapes);
       }
       Box4 node = right;
       node.grow(axis_bins[0].box);
       const float traversal = options_.traversal_cost * node.half_area();
       Box4 left;
-      uint32_t left_count = 0;
+      uint32_t left_count = 0, left_shapes = 0;
       for (int b = 1; b < count; ++b) {
         left.grow(axis_bins[size_t(b - 1)].box);
         left_count += axis_bins[size_t(b - 1)].count;
+        left_shapes += axis_bins[size_t(b - 1)].shapes;
         if (left_count == 0 || left_count == n) continue;
-        const float cost = traversal + left.half_area() * float(left_count) + right_cost[size_t(b)];
-        if (cost < best.cost) best = {axis, b, cost};
+        const float cost = traversal + left.half_area() * tests(left_count, left_shapes) + right_cost[size_t(b)];
+        if (cost < best.cost) best = {axis, b, cost, best.node_tests};
       }
     }
     return best;

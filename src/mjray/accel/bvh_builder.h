@@ -42,6 +42,11 @@ struct BvhBuildOptions {
   /// SAH cost of visiting a node relative to one primitive test; 2 rather than 1 makes
   /// leaves a little larger, which keeps 8-wide nodes fuller (memory) at ~4% speed.
   float traversal_cost = 2.0f;
+  /// Primitive ids from here on are analytic shapes (a ray mapped into their frame and a
+  /// quadratic or slab test in double), which cost `shape_cost` triangle tests: leaves of
+  /// shapes are kept smaller, so that the wide nodes' boxes reject more rays before them.
+  uint32_t shapes_from = UINT32_MAX;
+  float shape_cost = 4.0f;
 };
 
 /// Builds over primitives 0..bounds.size()-1 with world-space `bounds[prim]`. Primitives with

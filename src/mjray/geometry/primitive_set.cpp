@@ -4,9 +4,24 @@
 
 namespace mjray {
 
+namespace {
+
+/// A shape's box grown by 1e-4 of its coordinates' size. A shape is tested in its own frame
+/// against the world ray mapped there and rounded, so a grazing hit can lie just outside the
+/// box of the exact shape; accelerators cull by these boxes, and would then lose a hit that a
+/// test of every primitive finds. The margin covers rays from up to about a thousand times
+/// the box's distance from the origin.
+Bounds3 padded(const Bounds3& b) {
+  const float margin = 1e-4f * (max_component(abs(b.lo)) + max_component(abs(b.hi)));
+  const Vector3 pad(margin, margin, margin);
+  return {b.lo - pad, b.hi + pad};
+}
+
+}  // namespace
+
 void PrimitiveSet::add_shape(const Shape& s, const Transform& world_from_object) {
   const Bounds3 object_bounds = std::visit([](const auto& shape) { return shape.object_bounds(); }, s);
-  shapes.push_back({s, AffineMap(world_from_object.inverse_matrix()), world_from_object(object_bounds)});
+  shapes.push_back({s, AffineMap(world_from_object.inverse_matrix()), padded(world_from_object(object_bounds))});
 }
 
 void PrimitiveSet::add_triangles(const std::vector<Point3>& world_positions,

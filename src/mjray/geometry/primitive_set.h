@@ -19,7 +19,7 @@ namespace mjray {
 struct ShapeInstance {
   Shape shape;
   AffineMap object_from_world;  ///< maps world rays into the shape's frame
-  Bounds3 world_bounds;         ///< Arvo's box of the transformed unit shape
+  Bounds3 world_bounds;         ///< Arvo's box of the transformed unit shape, padded for rounding
 };
 
 /// Primitive ids [0, triangles.size()) are triangles; the rest are shapes, id

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/accel/brute_force.h"
+#include "mjray/accel/bvh_builder.h"
 #include "mjray/accel/primitive_list.h"
 #include "mjray/geometry/light_pyramid.h"
 #include "mjray/accel/make_accelerator.h"
@@ -244,6 +245,49 @@ TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
     EXPECT_EQ(std::memcmp(serial.leaf_data().data(), parallel.leaf_data().data(), serial.leaf_data().size_bytes()), 0)
         << threads;
   }
+}
+
+// Unit boxes on a lattice with gaps: the kind of scene where a leaf's box holds much empty space.
+std::vector<Bounds3> lattice_of_boxes(int n) {
+  std::vector<Bounds3> boxes;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        const Point3 lo{1.5f * float(i), 1.5f * float(j), 1.5f * float(k)};
+        boxes.push_back({lo, {lo.x + 1, lo.y + 1, lo.z + 1}});
+      }
+  return boxes;
+}
+
+double mean_leaf_size(const BvhBuildResult& built, uint32_t from, uint32_t to) {
+  double primitives = 0, leaves = 0;
+  for (const BvhNode& node : built.nodes) {
+    if (node.count == 0 || built.order[node.offset] < from || built.order[node.offset] >= to) continue;
+    primitives += node.count;
+    ++leaves;
+  }
+  return primitives / leaves;
+}
+
+TEST(BvhBuild, ShapesCostlierThanTrianglesGetSmallerLeaves) {
+  const std::vector<Bounds3> boxes = lattice_of_boxes(12);
+  const uint32_t n = uint32_t(boxes.size());
+  const BvhBuildResult as_triangles = build_bvh(boxes, {.threads = 1});
+  const BvhBuildResult as_shapes = build_bvh(boxes, {.threads = 1, .shapes_from = 0});
+  EXPECT_GT(mean_leaf_size(as_triangles, 0, n), 2.0);
+  EXPECT_LT(mean_leaf_size(as_shapes, 0, n), 0.75 * mean_leaf_size(as_triangles, 0, n));
+
+  // A shape costing one triangle test builds the triangles' tree exactly.
+  const BvhBuildResult unit_cost = build_bvh(boxes, {.threads = 1, .shapes_from = 0, .shape_cost = 1});
+  ASSERT_EQ(unit_cost.nodes.size(), as_triangles.nodes.size());
+  EXPECT_EQ(std::memcmp(unit_cost.nodes.data(), as_triangles.nodes.data(), unit_cost.nodes.size() * sizeof(BvhNode)), 0);
+  EXPECT_EQ(unit_cost.order, as_triangles.order);
+
+  // Mixed: a second lattice beside the first is of shapes; only its leaves shrink.
+  std::vector<Bounds3> mixed = boxes;
+  for (const Bounds3& b : boxes) mixed.push_back({b.lo + Vector3(100, 0, 0), b.hi + Vector3(100, 0, 0)});
+  const BvhBuildResult both = build_bvh(mixed, {.threads = 1, .shapes_from = n});
+  EXPECT_LT(mean_leaf_size(both, n, 2 * n), mean_leaf_size(both, 0, n));
 }
 
 TEST(BvhBuild, MemoryStaysWithinBudgetPerTriangle) {

@@ -9,6 +9,7 @@
 
 #include "mjray/accel/brute_force.h"
 #include "mjray/geometry/box.h"
+#include "mjray/geometry/primitive_set.h"
 #include "mjray/geometry/sphere.h"
 #include "mjray/geometry/triangle.h"
 #include "mjray/geometry/spawn_ray.h"
@@ -140,6 +141,42 @@ TEST(Geometry, NanAndInfRaysReturnNoHit) {
     EXPECT_FALSE(accel.intersect(ray, {}));
     EXPECT_FALSE(accel.occluded(ray, kInfinity));
   }
+}
+
+// Accelerators cull a shape by its world box, and a shape's hit is found in its own frame
+// from the world ray mapped and rounded there: every hit must lie within the box's slabs as
+// the ray sees them, or a hit that a test of every primitive finds is lost. Large, offset
+// shapes seen from far away round the most.
+TEST(Geometry, ShapeHitsLieWithinTheirWorldBoxes) {
+  PrimitiveSet set;
+  set.add_shape(UnitCube{}, Transform::translate({-30, -60, -30}) * Transform::scale(60, 60, 60));
+  set.add_shape(UnitSphere{}, Transform::translate({200, 5, -70}) * Transform::scale(40, 25, 40));
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<float> unit(0, 1);
+  int hits = 0, outside = 0;
+  for (uint32_t prim = 0; prim < set.size(); ++prim) {
+    const Bounds3 box = set.primitive_bounds(prim);
+    for (int i = 0; i < 200000; ++i) {
+      // Aim at a point on the box's top face from up to 1000 units away, mostly grazing.
+      const Point3 target{box.lo.x + unit(rng) * (box.hi.x - box.lo.x), box.hi.y - unit(rng) * unit(rng) * 2,
+                          box.lo.z + unit(rng) * (box.hi.z - box.lo.z)};
+      const Vector3 away = random_direction(rng);
+      const Ray ray{target + away * (1 + 1000 * unit(rng)), -away};
+      const auto hit = set.intersect(prim, ray, {});
+      if (!hit) continue;
+      ++hits;
+      float t_near = 0, t_far = kInfinity;
+      for (int a = 0; a < 3; ++a) {
+        const float t0 = (box.lo[a] - ray.origin[a]) / ray.direction[a];
+        const float t1 = (box.hi[a] - ray.origin[a]) / ray.direction[a];
+        t_near = std::max(t_near, std::min(t0, t1));
+        t_far = std::min(t_far, std::max(t0, t1));
+      }
+      outside += hit->t < t_near || hit->t > t_far;
+    }
+  }
+  EXPECT_GT(hits, 100000);
+  EXPECT_EQ(outside, 0);
 }
 
 TEST(Geometry, SphereUvCoversTheUnitSquare) {
