@@ -15,11 +15,7 @@ namespace mjray {
 namespace {
 
 constexpr unsigned kTriangleGeometry = 0;
-constexpr unsigned kShapeGeometry = 1;
-
-// Embree includes tnear in its range; the smallest normal float keeps t == 0 hits (origin on
-// the surface) out, as mjray's open range (0, t_max) requires.
-constexpr float kTNear = FLT_MIN;
+constexpr unsigned kUserGeometry = 1;
 
 bool count_device_bytes(void* counter, ssize_t bytes, bool /*post*/) {
   static_cast<std::atomic<int64_t>*>(counter)->fetch_add(int64_t(bytes), std::memory_order_relaxed);
@@ -38,90 +34,28 @@ std::string error_text(RTCError code) {
   }
 }
 
-// The shapes' user geometry: bounds and hits come from the PrimitiveSet itself.
-void shape_bounds(const RTCBoundsFunctionArguments* args) {
-  const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
-  const Bounds3 b = prims.primitive_bounds(uint32_t(prims.triangles.size()) + args->primID);
-  *args->bounds_o = {b.lo.x, b.lo.y, b.lo.z, 0, b.hi.x, b.hi.y, b.hi.z, 0};
-}
+using UserPrimitives = EmbreeAccelerator::UserPrimitives;
 
-// The range a callback's ray asks for (kTNear stands for mjray's open 0).
-Interval range_of(RTCRayN* ray, unsigned n, unsigned i) {
-  const float t_near = RTCRayN_tnear(ray, n, i);
-  return {t_near <= kTNear ? 0 : t_near, RTCRayN_tfar(ray, n, i)};
-}
-
-Ray ray_of(RTCRayN* ray, unsigned n, unsigned i) {
-  return {{RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i)},
-          {RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i)}};
-}
-
-void shape_intersect(const RTCIntersectFunctionNArguments* args) {
-  const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
-  const uint32_t prim = uint32_t(prims.triangles.size()) + args->primID;
-  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
-  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
-  for (unsigned i = 0; i < args->N; ++i) {
-    if (!args->valid[i]) continue;
-    const auto hit = prims.intersect_shape(prim, ray_of(rays, args->N, i), range_of(rays, args->N, i));
-    if (!hit) continue;
-    RTCRayN_tfar(rays, args->N, i) = hit->t;
-    RTCHitN_u(hits, args->N, i) = 0;
-    RTCHitN_v(hits, args->N, i) = 0;
-    RTCHitN_Ng_x(hits, args->N, i) = 0;  // shading data comes from World::interaction
-    RTCHitN_Ng_y(hits, args->N, i) = 0;
-    RTCHitN_Ng_z(hits, args->N, i) = 1;
-    RTCHitN_primID(hits, args->N, i) = args->primID;
-    RTCHitN_geomID(hits, args->N, i) = args->geomID;
-    RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
-  }
-}
-
-/// The context of a filtered occlusion query: Embree's own first, so that callbacks can get
-/// back to the rest from the pointer Embree passes them.
-struct FilterContext {
+/// A query's context: Embree's own first, so that callbacks get back to the rest from the
+/// pointer Embree passes them.
+struct QueryContext {
   RTCIntersectContext embree;
   const PrimitiveSet* prims;
-  HitFilter* filter;
-  Interval t_range;  ///< the query's: in a filter call Embree has set the ray's tfar to the hit's t
+  Interval t_range;             ///< the query's own (the Embree ray's is wider, see embree_ray)
+  HitFilter* filter = nullptr;  ///< a filtered occlusion query's
 };
 
-/// Whether the hit of a filtered query on transmissive `prim` blocks: the filter sees the hit
-/// as mjray's own test computes it; a hit that test does not confirm is passed over.
-bool filtered_blocks(const FilterContext& context, uint32_t prim, const Ray& ray, Interval t_range) {
-  const auto exact = context.prims->intersect(prim, ray, t_range);
-  return exact && context.filter->blocks(*exact);
+const QueryContext& query_of(const RTCIntersectContext* context) {
+  return *reinterpret_cast<const QueryContext*>(context);
 }
 
-void shape_occluded(const RTCOccludedFunctionNArguments* args) {
-  const PrimitiveSet& prims = *static_cast<const PrimitiveSet*>(args->geometryUserPtr);
-  const uint32_t prim = uint32_t(prims.triangles.size()) + args->primID;
-  const auto* context = reinterpret_cast<const FilterContext*>(args->context);
-  const bool filtered = args->context->filter != nullptr && prims.filtered(prim, context->filter->sees_opaque);
-  for (unsigned i = 0; i < args->N; ++i) {
-    if (!args->valid[i]) continue;
-    const Ray ray = ray_of(args->ray, args->N, i);
-    const Interval range = range_of(args->ray, args->N, i);
-    const auto hit = prims.intersect_shape(prim, ray, range);
-    if (!hit) continue;
-    if (filtered && !context->filter->blocks(*hit)) continue;
-    RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;  // Embree's "occluded" mark
-  }
-}
-
-/// The context filter of filtered occlusion queries, for triangles (shapes decide in their
-/// own callback): rejecting a hit (valid = 0) lets the ray go on.
-void triangle_occlusion_filter(const RTCFilterFunctionNArguments* args) {
-  const auto& context = *reinterpret_cast<const FilterContext*>(args->context);
-  for (unsigned i = 0; i < args->N; ++i) {
-    if (args->valid[i] != -1 || RTCHitN_geomID(args->hit, args->N, i) != kTriangleGeometry) continue;
-    const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
-    if (!context.prims->filtered(prim, context.filter->sees_opaque)) continue;
-    if (!filtered_blocks(context, prim, ray_of(args->ray, args->N, i), context.t_range)) args->valid[i] = 0;
-  }
-}
-
-RTCRay embree_ray(const Ray& ray, Interval t_range) {
+/// The segment Embree traverses for a query of `t_range`. For user primitives, widened by a
+/// relative 1e-5 at both ends: Embree's box tests round by a few ulps, and a box that ends
+/// exactly where a hit lies (a triangle in an axis plane) would otherwise be culled now and
+/// then. The callbacks test primitives with the query's own range. For native triangles the
+/// range itself, but for the smallest normal float for 0: Embree includes tnear, and mjray's
+/// range is open at 0 (no hits on the origin's own surface).
+RTCRay embree_ray(const Ray& ray, Interval t_range, bool native_triangles) {
   RTCRay r{};
   r.org_x = ray.origin.x;
   r.org_y = ray.origin.y;
@@ -129,22 +63,103 @@ RTCRay embree_ray(const Ray& ray, Interval t_range) {
   r.dir_x = ray.direction.x;
   r.dir_y = ray.direction.y;
   r.dir_z = ray.direction.z;
-  r.tnear = std::max(kTNear, t_range.min);
-  r.tfar = t_range.max;
+  if (native_triangles) {
+    r.tnear = std::max(FLT_MIN, t_range.min);
+    r.tfar = t_range.max;
+  } else {
+    constexpr float kWiden = 1e-5f;
+    r.tnear = std::max(0.f, t_range.min * (1 - kWiden));
+    r.tfar = t_range.max * (1 + kWiden);
+  }
   r.mask = ~0u;
   r.flags = 0;
   return r;
 }
 
 // Embree leaves rays with NaN or infinite components undefined; mjray says "no hit".
-bool valid_query(const Ray& ray, float t_max) {
-  return t_max > kTNear && is_finite(ray.origin) && is_finite(ray.direction);
+bool valid_query(const Ray& ray, Interval t_range) {
+  return t_range.max > t_range.min && is_finite(ray.origin) && is_finite(ray.direction);
+}
+
+void user_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto& user = *static_cast<const UserPrimitives*>(args->geometryUserPtr);
+  const Bounds3 b = user.prims->primitive_bounds(user.first + args->primID);
+  *args->bounds_o = {b.lo.x, b.lo.y, b.lo.z, 0, b.hi.x, b.hi.y, b.hi.z, 0};
+}
+
+Ray ray_of(RTCRayN* ray, unsigned n, unsigned i) {
+  return {{RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i)},
+          {RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i)}};
+}
+
+void user_intersect(const RTCIntersectFunctionNArguments* args) {
+  const auto& user = *static_cast<const UserPrimitives*>(args->geometryUserPtr);
+  const Interval query = query_of(args->context).t_range;
+  const uint32_t prim = user.first + args->primID;
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (!args->valid[i]) continue;
+    // Brute force's answer whatever order Embree visits primitives in: once a hit is held (its
+    // t in Ng.x, which shading never reads), only a nearer one, or one at the same t with a
+    // lower id, replaces it. The range reaches a float past the held t, as a triangle's range
+    // test, made before its division, may round either way there.
+    const unsigned held_geometry = RTCHitN_geomID(hits, args->N, i);
+    const bool holding = held_geometry != RTC_INVALID_GEOMETRY_ID;
+    const float held_t = !holding                         ? query.max
+                         : held_geometry == kUserGeometry ? RTCHitN_Ng_x(hits, args->N, i)
+                                                          : RTCRayN_tfar(rays, args->N, i);  // a native triangle's
+    const Interval reach{query.min, holding ? next_float(held_t, true) : query.max};
+    const auto hit = user.prims->intersect(prim, ray_of(rays, args->N, i), reach);
+    if (!hit) continue;
+    if (holding) {
+      const uint32_t held = RTCHitN_primID(hits, args->N, i) + (held_geometry == kUserGeometry ? user.first : 0);
+      if (!(hit->t < held_t || (hit->t == held_t && prim < held))) continue;
+    }
+    RTCRayN_tfar(rays, args->N, i) = std::min(RTCRayN_tfar(rays, args->N, i), hit->t * (1 + 1e-5f));
+    RTCHitN_u(hits, args->N, i) = hit->u;
+    RTCHitN_v(hits, args->N, i) = hit->v;
+    RTCHitN_Ng_x(hits, args->N, i) = hit->t;
+    RTCHitN_Ng_y(hits, args->N, i) = 0;
+    RTCHitN_Ng_z(hits, args->N, i) = 0;
+    RTCHitN_primID(hits, args->N, i) = args->primID;
+    RTCHitN_geomID(hits, args->N, i) = args->geomID;
+    RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+  }
+}
+
+void user_occluded(const RTCOccludedFunctionNArguments* args) {
+  const auto& user = *static_cast<const UserPrimitives*>(args->geometryUserPtr);
+  const QueryContext& query = query_of(args->context);
+  const uint32_t prim = user.first + args->primID;
+  const bool filtered = query.filter && user.prims->filtered(prim, query.filter->sees_opaque);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (!args->valid[i]) continue;
+    const auto hit = user.prims->intersect(prim, ray_of(args->ray, args->N, i), query.t_range);
+    if (!hit) continue;
+    if (filtered && !query.filter->blocks(*hit)) continue;
+    RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;  // Embree's "occluded" mark
+  }
+}
+
+/// The context filter of filtered occlusion queries, for native triangles (user primitives
+/// decide in their own callback): the filter sees the hit as mjray's own test computes it, and
+/// a hit that test does not confirm is passed over; rejecting a hit (valid = 0) lets the ray go on.
+void triangle_occlusion_filter(const RTCFilterFunctionNArguments* args) {
+  const QueryContext& query = query_of(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != -1 || RTCHitN_geomID(args->hit, args->N, i) != kTriangleGeometry) continue;
+    const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+    if (!query.prims->filtered(prim, query.filter->sees_opaque)) continue;
+    const auto exact = query.prims->intersect(prim, ray_of(args->ray, args->N, i), query.t_range);
+    if (!exact || !query.filter->blocks(*exact)) args->valid[i] = 0;
+  }
 }
 
 }  // namespace
 
 EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, bool exact_hits, bool robust)
-    : prims_(prims), bounds_(prims.bounds()), exact_hits_(exact_hits) {
+    : prims_(prims), bounds_(prims.bounds()) {
   // Create the device, counting every byte it allocates.
   const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
   device_ = rtcNewDevice(config.c_str());
@@ -152,13 +167,20 @@ EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, boo
   rtcSetDeviceMemoryMonitorFunction(device_, count_device_bytes, &device_bytes_);
   scene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  // Robust mode makes Embree's triangle test watertight, as mjray's own (Woop et al.) is;
-  // filtered occlusion queries need the context filter.
+  // Robust mode makes Embree's box tests conservative, as exact hits need, and its native
+  // triangle test watertight, as mjray's own (Woop et al.) is; filtered occlusion queries
+  // need the context filter.
   const int robust_flag = robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE;
   rtcSetSceneFlags(scene_, RTCSceneFlags(robust_flag | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION));
 
-  // Triangles: one geometry over the world-space vertices, in primitive order.
-  if (!prims.triangles.empty()) {
+  // With exact hits every primitive is a user primitive tested by mjray's own code, so that
+  // Embree only traverses and the nearest hit is the one every other accelerator finds: its
+  // own triangle test, though watertight too, rounds differently and may order two hits an ulp
+  // apart the other way, or miss a triangle at an edge that mjray's test hits. Without, the
+  // triangles are Embree's native geometry (one, over the world-space vertices, in primitive
+  // order) and only the shapes are user primitives.
+  native_triangles_ = !exact_hits && !prims.triangles.empty();
+  if (native_triangles_) {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), prims.vertices.size()));
@@ -177,16 +199,16 @@ EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, boo
     rtcReleaseGeometry(geometry);
   }
 
-  // Shapes: one user geometry that defers to the PrimitiveSet.
-  if (!prims.shapes.empty()) {
+  user_ = {&prims, native_triangles_ ? uint32_t(prims.triangles.size()) : 0};
+  if (const size_t count = prims.size() - user_.first; count > 0) {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(prims.shapes.size()));
-    rtcSetGeometryUserData(geometry, const_cast<PrimitiveSet*>(&prims));
-    rtcSetGeometryBoundsFunction(geometry, shape_bounds, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, shape_intersect);
-    rtcSetGeometryOccludedFunction(geometry, shape_occluded);
+    rtcSetGeometryUserPrimitiveCount(geometry, unsigned(count));
+    rtcSetGeometryUserData(geometry, &user_);
+    rtcSetGeometryBoundsFunction(geometry, user_bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, user_intersect);
+    rtcSetGeometryOccludedFunction(geometry, user_occluded);
     rtcCommitGeometry(geometry);
-    rtcAttachGeometryByID(scene_, geometry, kShapeGeometry);
+    rtcAttachGeometryByID(scene_, geometry, kUserGeometry);
     rtcReleaseGeometry(geometry);
   }
 
@@ -212,68 +234,39 @@ size_t EmbreeAccelerator::memory_bytes() const {
 }
 
 std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, Interval t_range) const {
-  if (!valid_query(ray, t_range.max)) return std::nullopt;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  if (!valid_query(ray, t_range)) return std::nullopt;
+  QueryContext context{{}, &prims_, t_range};
+  rtcInitIntersectContext(&context.embree);
   RTCRayHit rayhit;
-  rayhit.ray = embree_ray(ray, t_range);
+  rayhit.ray = embree_ray(ray, t_range, native_triangles_);
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rayhit);
+  rtcIntersect1(scene_, &context.embree, &rayhit);
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  std::optional<Hit> hit;
-  if (rayhit.hit.geomID == kShapeGeometry) {
-    hit = Hit{rayhit.ray.tfar, uint32_t(prims_.triangles.size()) + rayhit.hit.primID};
-  } else {
-    // Recompute the hit with mjray's own watertight test, so that t, u and v (and with them
-    // the image) are bit for bit those of every other accelerator. Embree's (u, v) weight
-    // vertices 1 and 2 as mjray's (b1, b2) do; they are the fallback should the exact test
-    // miss a triangle Embree grazed.
-    const uint32_t prim = rayhit.hit.primID;
-    if (exact_hits_) hit = prims_.intersect(prim, ray, {t_range.min, kInfinity});
-    if (!hit) hit = Hit{rayhit.ray.tfar, prim, rayhit.hit.u, rayhit.hit.v};
-  }
-  return exact_hits_ ? lowest_at_same_t(ray, *hit) : hit;
-}
-
-namespace {
-
-/// Sees every hit at exactly one t and keeps the one of the lowest primitive id.
-class SameT final : public HitFilter {
- public:
-  explicit SameT(const Hit& first) : HitFilter(true), best(first) {}
-  bool blocks(const Hit& hit) override {
-    if (hit.t == best.t && hit.prim < best.prim) best = hit;
-    return false;
-  }
-  Hit best;
-};
-
-}  // namespace
-
-Hit EmbreeAccelerator::lowest_at_same_t(const Ray& ray, const Hit& hit) const {
-  // Embree keeps whichever of several primitives at one t it met first; the others'
-  // rule is the lowest id. Look for the others in the one-float window around t.
-  SameT same(hit);
-  occluded(ray, {next_float(hit.t, false), next_float(hit.t, true)}, same);
-  return same.best;
+  // A user primitive's callback set t (in Ng.x), u and v from mjray's own test; a native
+  // triangle's are Embree's.
+  if (rayhit.hit.geomID == kUserGeometry)
+    return Hit{rayhit.hit.Ng_x, user_.first + rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v};
+  return Hit{rayhit.ray.tfar, rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v};
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
-  if (!valid_query(ray, t_max)) return false;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay r = embree_ray(ray, {0, t_max});
-  rtcOccluded1(scene_, &context, &r);
+  const Interval t_range{0, t_max};
+  if (!valid_query(ray, t_range)) return false;
+  QueryContext context{{}, &prims_, t_range};
+  rtcInitIntersectContext(&context.embree);
+  RTCRay r = embree_ray(ray, t_range, native_triangles_);
+  rtcOccluded1(scene_, &context.embree, &r);
   return r.tfar < 0;
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, Interval t_range, HitFilter& filter) const {
-  if (!valid_query(ray, t_range.max)) return false;
-  FilterContext context{{}, &prims_, &filter, t_range};
+  if (!valid_query(ray, t_range)) return false;
+  QueryContext context{{}, &prims_, t_range, &filter};
   rtcInitIntersectContext(&context.embree);
-  context.embree.filter = prims_.any_transmissive() || filter.sees_opaque ? triangle_occlusion_filter : nullptr;
-  RTCRay r = embree_ray(ray, t_range);
+  if (native_triangles_ && (prims_.any_transmissive() || filter.sees_opaque))
+    context.embree.filter = triangle_occlusion_filter;
+  RTCRay r = embree_ray(ray, t_range, native_triangles_);
   rtcOccluded1(scene_, &context.embree, &r);
   return r.tfar < 0;
 }

@@ -13,15 +13,23 @@ struct RTCSceneTy;
 
 namespace mjray {
 
-/// Embree's high-quality BVH over a PrimitiveSet: triangles as one native triangle geometry
-/// (Embree primID = mjray primitive id), shapes as one user geometry whose callbacks call
-/// PrimitiveSet::intersect_shape, so shapes hit exactly as with every other accelerator.
+/// Embree's high-quality BVH over a PrimitiveSet, primitives as a user geometry whose callbacks
+/// call PrimitiveSet::intersect, so that they hit exactly as with every other accelerator (or,
+/// for benchmarks, triangles as Embree's own native geometry).
 class EmbreeAccelerator final : public Accelerator {
  public:
+  /// What the user geometry's callbacks read: the primitives, and the mjray id of Embree
+  /// primID 0 (0, or the first shape when triangles are native).
+  struct UserPrimitives {
+    const PrimitiveSet* prims;
+    uint32_t first;
+  };
+
   /// Builds over `prims` (which must outlive this); `threads` build threads, 0 = all cores.
   /// Throws SceneError when Embree cannot create a device or build the scene.
-  /// With `exact_hits` (the default) each hit is recomputed with mjray's own triangle test, so
-  /// images match the other accelerators bit for bit; benchmarks turn it off to time Embree alone.
+  /// With `exact_hits` (the default) Embree only traverses and mjray's own tests decide every
+  /// hit, so images match the other accelerators bit for bit; benchmarks turn it off to time
+  /// Embree's native triangles alone.
   /// `robust` (the default) sets Embree's robust scene flag, which makes its triangle test
   /// watertight as mjray's is; benchmarks may compare Embree's faster default too.
   explicit EmbreeAccelerator(const PrimitiveSet& prims, int threads = 0, bool exact_hits = true, bool robust = true);
@@ -39,12 +47,11 @@ class EmbreeAccelerator final : public Accelerator {
 
  private:
   void release();
-  /// Among the primitives hit at exactly hit.t, the one of the lowest id (hit if alone).
-  Hit lowest_at_same_t(const Ray& ray, const Hit& hit) const;
 
   const PrimitiveSet& prims_;
   Bounds3 bounds_;
-  bool exact_hits_ = true;
+  UserPrimitives user_{};
+  bool native_triangles_ = false;
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
   std::atomic<int64_t> device_bytes_{0};  ///< updated by Embree's memory monitor callback

@@ -114,6 +114,32 @@ inline void add_camera_queries(OracleCase& c, int width) {
   }
 }
 
+/// A grid of `n`×`n` quads (two triangles each) over [-half, half]² in the plane y = `y`.
+inline TriangleMesh flat_grid(int n, float half, float y) {
+  TriangleMesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.push_back({-half + 2 * half * i / n, y, -half + 2 * half * j / n});
+  const auto corner = [&](int i, int j) { return MeshCorner{int32_t(j * (n + 1) + i)}; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({corner(i, j), corner(i + 1, j), corner(i + 1, j + 1)});
+      m.triangles.push_back({corner(i, j), corner(i + 1, j + 1), corner(i, j + 1)});
+    }
+  return m;
+}
+
+/// For each of the first `count` queries that hit (per c.expected), a query leaving the hit
+/// point o + t·d in a random direction: rays that start on a surface, as every secondary ray does.
+inline void add_queries_from_hits(OracleCase& c, size_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  const size_t existing = c.queries.size();
+  for (size_t i = 0; i < existing && i < count; ++i)
+    if (const auto& hit = c.expected[i]) {
+      const Ray& ray = c.queries[i].ray;
+      c.queries.push_back({{ray.origin + ray.direction * hit->t, random_direction(rng)}});
+    }
+}
+
 /// Fills c.expected from brute force, on all cores (it dominates the tests' run time).
 inline void solve_with_brute_force(OracleCase& c) {
   const BruteForce oracle(*c.prims);
@@ -130,7 +156,7 @@ inline void solve_with_brute_force(OracleCase& c) {
 
 /// The named cases, built once per test run and shared by every accelerator's tests; null
 /// when ../shared is absent. Names: teapot_low, bunny_low, cornell, suzanne, spot, shapes,
-/// mixed; over 100k queries on real meshes in all, sized so brute force stays around a second.
+/// mixed, surfaces; over 100k queries on real meshes in all, sized so brute force stays around a second.
 inline const OracleCase* oracle_case(const std::string& name) {
   static std::map<std::string, std::unique_ptr<OracleCase>> cache;
   if (auto it = cache.find(name); it != cache.end()) return it->second.get();
@@ -166,6 +192,13 @@ inline const OracleCase* oracle_case(const std::string& name) {
     add_mesh(w, bunny, Transform::translate({2, 0, 0}) * Transform::rotate(1, 30) * Transform::scale(0.2f, 0.3f, 0.2f));
     add_random_shapes(w, 20, 3, 11);
     random = 3000, camera = 20;
+  } else if (name == "surfaces") {
+    // Surfaces that touch: a grid of triangles lying on a box's top face, a sphere resting on
+    // both, so that two primitives are often hit an ulp or two apart, and many shared edges.
+    add_mesh(w, flat_grid(12, 0.8f, 0));
+    w.add_shape(Shape(UnitCube{}), Transform::translate({-1, -1, -1}) * Transform::scale(2, 1, 2));
+    w.add_shape(Shape(UnitSphere{}), Transform::translate({0.1f, 0.5f, 0}) * Transform::scale(0.5f, 0.5f, 0.5f));
+    random = 40000, camera = 60;
   } else {
     ADD_FAILURE() << "no oracle case '" << name << "'";
     return nullptr;
@@ -173,6 +206,10 @@ inline const OracleCase* oracle_case(const std::string& name) {
   add_random_queries(*c, random, uint32_t(std::hash<std::string>{}(name)));
   add_camera_queries(*c, camera);
   solve_with_brute_force(*c);
+  if (name == "surfaces") {
+    add_queries_from_hits(*c, c->queries.size(), 5);
+    solve_with_brute_force(*c);
+  }
   return cache.emplace(name, std::move(c)).first->second.get();
 }
 
@@ -240,6 +277,26 @@ inline size_t expect_agreement(const OracleCase& c, const Accelerator& accel, si
                                for (const auto& m : messages) all += "  " + m + "\n";
                                return all;
                              }();
+  return bad;
+}
+
+/// Checks that `accel` answers every query of the case exactly as brute force does: the same
+/// primitive at the same float t with the same (u, v), or no hit; and occluded() the same.
+/// Returns how many queries differ.
+inline size_t expect_identical_hits(const OracleCase& c, const Accelerator& accel) {
+  size_t bad = 0;
+  std::string first;
+  for (size_t i = 0; i < c.queries.size(); ++i) {
+    const Query& q = c.queries[i];
+    const auto got = accel.intersect(q.ray, {0, q.t_max});
+    const auto& want = c.expected[i];
+    const bool same = got.has_value() == want.has_value() &&
+                      (!got || (got->prim == want->prim && got->t == want->t && got->u == want->u && got->v == want->v));
+    if (same && accel.occluded(q.ray, q.t_max) == want.has_value()) continue;
+    if (++bad == 1) first = describe(q) + ": expected " + describe(want) + ", got " + describe(got);
+  }
+  EXPECT_EQ(bad, 0u) << accel.name() << " differs from brute force on " << bad << " of " << c.queries.size()
+                     << " queries, e.g. " << first;
   return bad;
 }
 

@@ -19,6 +19,7 @@
 #include "mjray/geometry/primitive_set.h"
 #include "mjray/io/obj_loader.h"
 #include "support/test_paths.h"
+#include "unit/accel/accel_oracle.h"
 
 namespace mjray {
 namespace {
@@ -229,6 +230,18 @@ TEST(BvhOracle, AgreesWithBruteForceOnALargerMesh) {
   const PrimitiveSet world = obj_world(shared / "models/medium/dragon_vrip_res4.obj");
   const Bvh bvh(world, 2);
   expect_agrees(world, bvh, random_rays(world.bounds(), 1500, 13), "dragon random");
+}
+
+// Not only near: the same primitive at the same float t, as brute force, wherever two surfaces
+// touch or a ray leaves one; images must not depend on the accelerator.
+TEST(BvhOracle, EveryHitIsBruteForcesBitForBit) {
+  for (const std::string name : {"surfaces", "cornell", "mixed", "shapes", "teapot_low"}) {
+    SCOPED_TRACE(name);
+    const test::OracleCase* c = test::oracle_case(name);
+    if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";
+    test::expect_identical_hits(*c, Bvh(*c->prims, 0));
+    test::expect_identical_hits(*c, Bvh(*c->prims, 0, BvhSimd::kBaseline));
+  }
 }
 
 TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
