@@ -235,7 +235,7 @@ TEST(BvhOracle, AgreesWithBruteForceOnALargerMesh) {
 // Not only near: the same primitive at the same float t, as brute force, wherever two surfaces
 // touch or a ray leaves one; images must not depend on the accelerator.
 TEST(BvhOracle, EveryHitIsBruteForcesBitForBit) {
-  for (const std::string name : {"surfaces", "cornell", "mixed", "shapes", "teapot_low"}) {
+  for (const std::string name : {"surfaces", "cornell", "mixed", "shapes", "teapot_low", "bunny_low", "suzanne", "spot"}) {
     SCOPED_TRACE(name);
     const test::OracleCase* c = test::oracle_case(name);
     if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";

@@ -62,7 +62,7 @@ TEST(EmbreeAgreement, TouchingSurfacesAndRaysLeavingThem) { expect_embree_agrees
 // images do not depend on the accelerator. Embree's native triangle test orders two hits an ulp
 // apart its own way, and at an edge may pick the other triangle.
 TEST(EmbreeExactHits, EveryHitIsBruteForcesBitForBit) {
-  for (const std::string name : {"surfaces", "cornell", "mixed", "shapes", "teapot_low"}) {
+  for (const std::string name : {"surfaces", "cornell", "mixed", "shapes", "teapot_low", "bunny_low", "suzanne", "spot"}) {
     SCOPED_TRACE(name);
     const OracleCase* c = test::oracle_case(name);
     if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";
