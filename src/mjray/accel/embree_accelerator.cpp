@@ -49,12 +49,16 @@ const QueryContext& query_of(const RTCIntersectContext* context) {
   return *reinterpret_cast<const QueryContext*>(context);
 }
 
-/// The segment Embree traverses for a query of `t_range`. For user primitives, widened by a
-/// relative 1e-5 at both ends: Embree's box tests round by a few ulps, and a box that ends
+/// How much wider than a query's range the segment Embree traverses for user primitives is,
+/// relatively, at both ends: Embree's box tests round by a few ulps, and a box that ends
 /// exactly where a hit lies (a triangle in an axis plane) would otherwise be culled now and
-/// then. The callbacks test primitives with the query's own range. For native triangles the
-/// range itself, but for the smallest normal float for 0: Embree includes tnear, and mjray's
-/// range is open at 0 (no hits on the origin's own surface).
+/// then. The callbacks test primitives with the query's own range.
+constexpr float kWiden = 1e-5f;
+
+/// The segment Embree traverses for a query of `t_range`: widened by kWiden with user
+/// primitives only; with native triangles the range itself, but for the smallest normal float
+/// for 0: Embree includes tnear, and mjray's range is open at 0 (no hits on the origin's own
+/// surface).
 RTCRay embree_ray(const Ray& ray, Interval t_range, bool native_triangles) {
   RTCRay r{};
   r.org_x = ray.origin.x;
@@ -67,7 +71,6 @@ RTCRay embree_ray(const Ray& ray, Interval t_range, bool native_triangles) {
     r.tnear = std::max(FLT_MIN, t_range.min);
     r.tfar = t_range.max;
   } else {
-    constexpr float kWiden = 1e-5f;
     r.tnear = std::max(0.f, t_range.min * (1 - kWiden));
     r.tfar = t_range.max * (1 + kWiden);
   }
@@ -116,7 +119,9 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
       const uint32_t held = RTCHitN_primID(hits, args->N, i) + (held_geometry == kUserGeometry ? user.first : 0);
       if (!(hit->t < held_t || (hit->t == held_t && prim < held))) continue;
     }
-    RTCRayN_tfar(rays, args->N, i) = std::min(RTCRayN_tfar(rays, args->N, i), hit->t * (1 + 1e-5f));
+    // Native triangles are ordered by Embree's own t, so beside them the segment ends at the hit.
+    const float reach_on = user.native_triangles() ? hit->t : hit->t * (1 + kWiden);
+    RTCRayN_tfar(rays, args->N, i) = std::min(RTCRayN_tfar(rays, args->N, i), reach_on);
     RTCHitN_u(hits, args->N, i) = hit->u;
     RTCHitN_v(hits, args->N, i) = hit->v;
     RTCHitN_Ng_x(hits, args->N, i) = hit->t;
@@ -179,8 +184,8 @@ EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, boo
   // apart the other way, or miss a triangle at an edge that mjray's test hits. Without, the
   // triangles are Embree's native geometry (one, over the world-space vertices, in primitive
   // order) and only the shapes are user primitives.
-  native_triangles_ = !exact_hits && !prims.triangles.empty();
-  if (native_triangles_) {
+  const bool native_triangles = !exact_hits && !prims.triangles.empty();
+  if (native_triangles) {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), prims.vertices.size()));
@@ -199,7 +204,7 @@ EmbreeAccelerator::EmbreeAccelerator(const PrimitiveSet& prims, int threads, boo
     rtcReleaseGeometry(geometry);
   }
 
-  user_ = {&prims, native_triangles_ ? uint32_t(prims.triangles.size()) : 0};
+  user_ = {&prims, native_triangles ? uint32_t(prims.triangles.size()) : 0};
   if (const size_t count = prims.size() - user_.first; count > 0) {
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, unsigned(count));
@@ -238,7 +243,7 @@ std::optional<Hit> EmbreeAccelerator::intersect(const Ray& ray, Interval t_range
   QueryContext context{{}, &prims_, t_range};
   rtcInitIntersectContext(&context.embree);
   RTCRayHit rayhit;
-  rayhit.ray = embree_ray(ray, t_range, native_triangles_);
+  rayhit.ray = embree_ray(ray, t_range, user_.native_triangles());
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context.embree, &rayhit);
@@ -255,7 +260,7 @@ bool EmbreeAccelerator::occluded(const Ray& ray, float t_max) const {
   if (!valid_query(ray, t_range)) return false;
   QueryContext context{{}, &prims_, t_range};
   rtcInitIntersectContext(&context.embree);
-  RTCRay r = embree_ray(ray, t_range, native_triangles_);
+  RTCRay r = embree_ray(ray, t_range, user_.native_triangles());
   rtcOccluded1(scene_, &context.embree, &r);
   return r.tfar < 0;
 }
@@ -264,9 +269,9 @@ bool EmbreeAccelerator::occluded(const Ray& ray, Interval t_range, HitFilter& fi
   if (!valid_query(ray, t_range)) return false;
   QueryContext context{{}, &prims_, t_range, &filter};
   rtcInitIntersectContext(&context.embree);
-  if (native_triangles_ && (prims_.any_transmissive() || filter.sees_opaque))
+  if (user_.native_triangles() && (prims_.any_transmissive() || filter.sees_opaque))
     context.embree.filter = triangle_occlusion_filter;
-  RTCRay r = embree_ray(ray, t_range, native_triangles_);
+  RTCRay r = embree_ray(ray, t_range, user_.native_triangles());
   rtcOccluded1(scene_, &context.embree, &r);
   return r.tfar < 0;
 }

@@ -23,6 +23,9 @@ class EmbreeAccelerator final : public Accelerator {
   struct UserPrimitives {
     const PrimitiveSet* prims;
     uint32_t first;
+    /// Whether the triangles are Embree's native geometry (then the shapes alone are user
+    /// primitives, from id triangles.size() on).
+    bool native_triangles() const { return first > 0; }
   };
 
   /// Builds over `prims` (which must outlive this); `threads` build threads, 0 = all cores.
@@ -51,7 +54,6 @@ class EmbreeAccelerator final : public Accelerator {
   const PrimitiveSet& prims_;
   Bounds3 bounds_;
   UserPrimitives user_{};
-  bool native_triangles_ = false;
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
   std::atomic<int64_t> device_bytes_{0};  ///< updated by Embree's memory monitor callback
