@@ -25,8 +25,13 @@
 #include <string>
 #include <vector>
 
+#include "mjray/accel/bvh.h"
+#include "mjray/accel/bvh_builder.h"
 #include "mjray/accel/make_accelerator.h"
 #include "mjray/accel/uniform_grid.h"
+#ifdef MJRAY_HAVE_EMBREE
+#include "mjray/accel/embree_bvh_builder.h"
+#endif
 #include "mjray/core/rng.h"
 #include "mjray/geometry/spawn_ray.h"
 #include "mjray/io/obj_loader.h"
@@ -58,6 +63,9 @@ struct Options {
   bool closest = false;       ///< shadow rays as closest-hit queries (to compare with occluded)
   /// Embree's scene flags: "robust" (what mjray renders with) or its faster "default".
   std::string embree_flags = "robust";
+  /// With --accel bvh, whose builder makes the tree: "mjray", or Embree's ("embree", and
+  /// "embree-splits" with its spatial splits), with mjray's cost model and leaf size.
+  std::string tree = "mjray";
 };
 
 /// One query: a ray and its range (shadow rays stop short of the light).
@@ -70,7 +78,7 @@ constexpr const char* kUsage =
     "usage: mjray-bench --mesh FILE.obj --accel none|grid|bvh|embree --rays primary|incoherent|shadow\n"
     "                   [--threads N] [--build-threads N] [--grid N | --grid-optimal] [--repeat K]\n"
     "                   [--max-rays N] [--ray-count N] [--seed N] [--min-ms N] [--closest]\n"
-    "                   [--embree-flags robust|default]\n";
+    "                   [--embree-flags robust|default] [--tree mjray|embree|embree-splits]\n";
 
 /// Prints the problem and the usage to stderr and exits 2 (as mjray does for a bad command line).
 [[noreturn]] void usage(const std::string& problem) {
@@ -114,6 +122,11 @@ Options parse(int argc, char** argv) {
       o.embree_flags = value();
       if (o.embree_flags != "robust" && o.embree_flags != "default") usage("--embree-flags takes robust or default");
     }
+    else if (a == "--tree") {
+      o.tree = value();
+      if (o.tree != "mjray" && o.tree != "embree" && o.tree != "embree-splits")
+        usage("--tree takes mjray, embree or embree-splits");
+    }
     else if (a == "--help" || a == "-h") {
       std::fputs(kUsage, stdout);
       std::exit(0);
@@ -125,6 +138,10 @@ Options parse(int argc, char** argv) {
   if (o.threads < 1) o.threads = 1;
   if (o.build_threads < 0) o.build_threads = o.threads;
   if (o.repeat < 1) o.repeat = 1;
+  if (o.tree != "mjray" && o.accel != "bvh") usage("--tree is for --accel bvh");
+#ifndef MJRAY_HAVE_EMBREE
+  if (o.tree != "mjray") usage("--tree " + o.tree + " needs a build with Embree");
+#endif
   return o;
 }
 
@@ -134,6 +151,19 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The accelerator asked for; with --tree embree*, mjray's BVH traversal over Embree's tree.
+std::unique_ptr<Accelerator> make_bench_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options,
+                                                    const std::string& tree) {
+#ifdef MJRAY_HAVE_EMBREE
+  if (tree != "mjray") {
+    EmbreeTreeOptions embree{.spatial_splits = tree == "embree-splits", .threads = options.threads};
+    return std::make_unique<Bvh>(prims, embree_built_tree(prims, embree), options.threads);
+  }
+#endif
+  (void)tree;
+  return make_accelerator(prims, options);
 }
 
 /// A World holding the OBJ as one mesh, one primitive per triangle, no shapes.
@@ -298,9 +328,12 @@ int main(int argc, char** argv) {
     for (int k = 0; k < o.repeat; ++k) {
       accel.reset();
       start = Clock::now();
-      accel = make_accelerator(world.primitives, accel_options);
+      accel = make_bench_accelerator(world.primitives, accel_options, o.tree);
       builds.push_back(seconds_since(start));
     }
+    // The SAH cost in mjray's cost model (a node 2 primitive tests), for comparing trees.
+    const auto* bvh = dynamic_cast<const Bvh*>(accel.get());
+    const double sah_cost = bvh ? bvh->sah_cost(BvhBuildOptions{}.traversal_cost, 1) : 0;
     int grid_resolution = 0;
     if (const auto* grid = dynamic_cast<const UniformGrid*>(accel.get())) grid_resolution = grid->resolution();
 
@@ -326,14 +359,15 @@ int main(int argc, char** argv) {
                 "\"ray_kind\": \"%s\", \"query\": \"%s\", \"rays\": %zu, \"hits\": %zu, \"repeat\": %d, \"load_seconds\": %.6f, "
                 "\"build_seconds\": %.6f, \"build_seconds_min\": %.6f, \"accel_bytes\": %zu, "
                 "\"bytes_per_triangle\": %.2f, \"trace_seconds\": %.6f, \"trace_seconds_min\": %.6f, "
-                "\"rays_per_second\": %.1f, \"passes\": %d, \"build_threads\": %d, \"embree_flags\": \"%s\"}\n",
+                "\"rays_per_second\": %.1f, \"passes\": %d, \"build_threads\": %d, \"embree_flags\": \"%s\", "
+                "\"tree\": \"%s\", \"sah_cost\": %.4f}\n",
                 json_escape(o.mesh).c_str(), world.primitives.triangles.size(), std::string(accel->name()).c_str(),
                 grid_resolution, o.threads, o.rays.c_str(), shadow ? "occluded" : "intersect", rays.size(), hits, o.repeat, load_seconds,
                 median(builds), *std::min_element(builds.begin(), builds.end()), accel->memory_bytes(),
                 world.primitives.triangles.empty() ? 0.0 : double(accel->memory_bytes()) / double(world.primitives.triangles.size()),
                 trace_seconds, *std::min_element(traces.begin(), traces.end()),
                 trace_seconds > 0 ? double(rays.size()) / trace_seconds : 0.0, passes, o.build_threads,
-                o.accel == "embree" ? o.embree_flags.c_str() : "");
+                o.accel == "embree" ? o.embree_flags.c_str() : "", o.accel == "bvh" ? o.tree.c_str() : "", sah_cost);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "mjray-bench: error: %s\n", e.what());
     return 1;

@@ -88,36 +88,41 @@ bool cpu_has_avx() {
 #endif
 }
 
-}  // namespace
-
-Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd)
-    : prims_(prims),
-      triangle_count_(uint32_t(prims.triangles.size())),
-      use_avx_(simd == BvhSimd::kBest && cpu_has_avx()) {
-  // Build the binary tree over the primitives' bounds, widen it, then copy the triangles into
-  // leaf order.
+/// mjray's own tree: binned SAH, then collapsed to wide nodes. The binary tree is freed before
+/// the leaves are filled, so that the build's peak memory is the mesh scene's peak.
+BvhTree built_tree(const PrimitiveSet& prims, int threads) {
   if (prims.size() > BvhWideNode::kMaxLeafPrimitives)
     throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
                             " primitives; use --accel embree for this scene");
   static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
-  // Each structure is released as soon as the next is made: the build's peak memory is the
-  // mesh scene's peak.
   BvhBuildResult built = build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
-                                   {.threads = threads, .shapes_from = triangle_count_});
-  nodes_ = collapse_to_wide(built.nodes);
+                                   {.threads = threads, .shapes_from = uint32_t(prims.triangles.size())});
+  BvhTree tree{collapse_to_wide(built.nodes), std::move(built.order), {}};
   if (!built.nodes.empty()) {
     const BvhNode& root = built.nodes.front();
-    bounds_ = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
+    tree.bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
   }
-  BvhNodes().swap(built.nodes);
-  leaf_data_.assign(built.order.size() * LeafRun::kLeafFloats + LeafRun::kLeafPadding, 0.f);
-  // Fill each leaf's run, in chunks of nodes on all the build's threads.
+  return tree;
+}
+
+}  // namespace
+
+Bvh::Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd) : Bvh(prims, built_tree(prims, threads), threads, simd) {}
+
+Bvh::Bvh(const PrimitiveSet& prims, BvhTree tree, int threads, BvhSimd simd)
+    : prims_(prims),
+      triangle_count_(uint32_t(prims.triangles.size())),
+      use_avx_(simd == BvhSimd::kBest && cpu_has_avx()),
+      nodes_(std::move(tree.nodes)),
+      bounds_(tree.bounds) {
+  // Copy the triangles into leaf order, in chunks of nodes on all the build's threads.
+  leaf_data_.assign(tree.order.size() * LeafRun::kLeafFloats + LeafRun::kLeafPadding, 0.f);
   constexpr int kChunks = 64;
   parallel_for(kChunks, resolve_thread_count(threads), [&](int chunk, int) {
     for (auto [n, end] = chunk_range(nodes_.size(), chunk, kChunks); n < end; ++n) {
       const BvhWideNode& node = nodes_[n];
       for (size_t c = 0; c < size_t(kBvhWidth); ++c)
-        if (node.is_leaf(c)) write_leaf_run(node.first(c), node.count(c), built.order);
+        if (node.is_leaf(c)) write_leaf_run(node.first(c), node.count(c), tree.order);
     }
   });
 }
@@ -132,6 +137,23 @@ void Bvh::write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_
     for (uint32_t k = 0; k < 3; ++k)
       for (uint32_t axis = 0; axis < 3; ++axis) run[(3 * k + axis) * count + i] = v[k][int(axis)];
   }
+}
+
+double Bvh::sah_cost(double node_cost, double primitive_cost) const {
+  if (nodes_.empty()) return 0;
+  const auto area = [](float dx, float dy, float dz) { return double(dx) * dy + double(dy) * dz + double(dz) * dx; };
+  const Vector3 d = bounds_.diagonal();
+  const double root = area(d.x, d.y, d.z);
+  if (!(root > 0)) return node_cost;
+  double cost = node_cost;
+  for (const BvhWideNode& node : nodes_)
+    for (size_t i = 0; i < size_t(kBvhWidth); ++i) {
+      const auto& b = node.bounds;
+      if (b[0][i] > b[3][i]) continue;  // an unused slot
+      const double share = area(b[3][i] - b[0][i], b[4][i] - b[1][i], b[5][i] - b[2][i]) / root;
+      cost += share * (node.is_leaf(i) ? primitive_cost * node.count(i) : node_cost);
+    }
+  return cost;
 }
 
 size_t Bvh::memory_bytes() const {

@@ -89,12 +89,25 @@ enum class BvhSimd {
   kBaseline,  ///< what the build targets (4-wide SSE2 on x86-64); for tests and comparisons
 };
 
+/// A wide tree over a PrimitiveSet, before its leaves' triangles are copied: the nodes (root
+/// first; leaf words index `order`), the primitive ids in leaf order (an id may appear in more
+/// than one leaf, as after spatial splits), and the bounds of the root.
+struct BvhTree {
+  BvhWideNodes nodes;
+  std::vector<uint32_t> order;
+  Bounds3 bounds;
+};
+
 /// Binned-SAH BVH over all of a PrimitiveSet's primitives (triangles and shapes). Primitives
 /// whose bounds are not finite are left out: the intersection tests never hit them.
 class Bvh final : public Accelerator {
  public:
   /// Builds over `prims` (which must outlive the Bvh) with `threads` threads (0 = all cores).
   Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd = BvhSimd::kBest);
+  /// Traverses a tree built elsewhere (by another builder, to compare trees under the same
+  /// traversal); every leaf must hold 1..7 of `prims`' primitives, every primitive whose bounds
+  /// are finite must be in some leaf, and the depth must stay under 64.
+  Bvh(const PrimitiveSet& prims, BvhTree tree, int threads, BvhSimd simd = BvhSimd::kBest);
 
   std::optional<Hit> intersect(const Ray& ray, Interval t_range) const override;
   bool occluded(const Ray& ray, float t_max) const override;
@@ -111,6 +124,10 @@ class Bvh final : public Accelerator {
   std::span<const float> leaf_data() const { return {leaf_data_.data(), leaf_data_.size() - LeafRun::kLeafPadding}; }
   /// The number of primitives in the leaves.
   size_t leaf_primitive_count() const { return (leaf_data_.size() - LeafRun::kLeafPadding) / LeafRun::kLeafFloats; }
+  /// The surface area heuristic's estimate of a ray's cost through the tree: `node_cost` per
+  /// node box entered and `primitive_cost` per primitive of a leaf box entered, each weighted
+  /// by the box's area over the root's (the root's own visit counts one node_cost).
+  double sah_cost(double node_cost, double primitive_cost) const;
   /// Whether traversal runs the 8-wide AVX slab test (chosen at construction).
   bool uses_avx() const { return use_avx_; }
 

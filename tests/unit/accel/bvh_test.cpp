@@ -328,6 +328,61 @@ TEST(BvhBuild, MakeAcceleratorBuildsTheBvh) {
   EXPECT_TRUE(accel->intersect({{0.2f, 0.2f, 1}, {0, 0, -1}}, {}).has_value());
 }
 
+// A tree made by hand: a root with two leaves, one triangle each, in the two halves of a
+// 2×1×1 box. Half-areas (xy + yz + zx): the root 5, each half 3.
+BvhTree two_leaf_tree() {
+  BvhTree tree;
+  tree.bounds = {{0, 0, 0}, {2, 1, 1}};
+  BvhWideNode root{};
+  for (size_t k = 0; k < 3; ++k) {
+    root.bounds[k].fill(kInfinity);
+    root.bounds[k + 3].fill(-kInfinity);
+  }
+  for (size_t i = 0; i < 2; ++i) {
+    root.bounds[0][i] = float(i), root.bounds[1][i] = 0, root.bounds[2][i] = 0;
+    root.bounds[3][i] = float(i + 1), root.bounds[4][i] = 1, root.bounds[5][i] = 1;
+    root.child[i] = BvhWideNode::leaf_word(uint32_t(i), 1);
+  }
+  tree.nodes.push_back(root);
+  tree.order = {0, 1};
+  return tree;
+}
+
+TEST(BvhSahCost, IsTheAreaWeightedCostOfEveryBoxEntered) {
+  const PrimitiveSet world = mesh_world({{0, 0, 0.5f}, {1, 0, 0.5f}, {0, 1, 0.5f}, {2, 0, 0.5f}, {1, 1, 0.5f}},
+                                        {{0, 1, 2}, {1, 3, 4}});
+  const Bvh bvh(world, two_leaf_tree(), 1);
+  // The root's visit, then each leaf's one primitive with probability 3/5.
+  EXPECT_DOUBLE_EQ(bvh.sah_cost(2, 1), 2 + 2 * (3.0 / 5));
+  EXPECT_DOUBLE_EQ(bvh.sah_cost(1, 3), 1 + 3 * 2 * (3.0 / 5));
+  // mjray's own build of one triangle: a root whose one leaf has the root's box.
+  const PrimitiveSet one = mesh_world({{0, 0, 0}, {1, 0, 0}, {0, 1, 1}}, {{0, 1, 2}});
+  EXPECT_DOUBLE_EQ(Bvh(one, 1).sah_cost(2, 1), 3);
+}
+
+TEST(BvhSahCost, EmptyTreeCostsNothing) {
+  const PrimitiveSet empty;
+  EXPECT_EQ(Bvh(empty, 1).sah_cost(2, 1), 0);
+}
+
+TEST(BvhPrebuiltTree, IsTraversedAsGiven) {
+  const PrimitiveSet world = mesh_world({{0, 0, 0.5f}, {1, 0, 0.5f}, {0, 1, 0.5f}, {2, 0, 0.5f}, {1, 1, 0.5f}},
+                                        {{0, 1, 2}, {1, 3, 4}});
+  for (const BvhSimd simd : {BvhSimd::kBest, BvhSimd::kBaseline}) {
+    const Bvh bvh(world, two_leaf_tree(), 1, simd);
+    EXPECT_EQ(bvh.leaf_primitive_count(), 2u);
+    EXPECT_EQ(bvh.bounds().hi, (Point3{2, 1, 1}));
+    const auto a = bvh.intersect({{0.2f, 0.2f, -1}, {0, 0, 1}}, {0, kInfinity});
+    const auto b = bvh.intersect({{1.2f, 0.2f, -1}, {0, 0, 1}}, {0, kInfinity});
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(a->prim, 0u);
+    EXPECT_EQ(b->prim, 1u);
+    EXPECT_EQ(a->t, BruteForce(world).intersect({{0.2f, 0.2f, -1}, {0, 0, 1}}, {0, kInfinity})->t);
+    EXPECT_NEAR(a->t, 1.5f, 1e-6f);
+    EXPECT_FALSE(bvh.intersect({{1.8f, 0.8f, -1}, {0, 0, 1}}, {0, kInfinity}));
+  }
+}
+
 TEST(BvhEdgeCases, EmptyWorldHasNoHitsAndEmptyBounds) {
   const PrimitiveSet world;
   const Bvh bvh(world, 0);

@@ -1,6 +1,7 @@
 // The Embree adapter against the brute-force oracle; in a build without Embree, only the
 // error that --accel embree gives.
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -13,7 +14,9 @@
 #include "unit/accel/accel_oracle.h"
 
 #ifdef MJRAY_HAVE_EMBREE
+#include "mjray/accel/bvh.h"
 #include "mjray/accel/embree_accelerator.h"
+#include "mjray/accel/embree_bvh_builder.h"
 #endif
 
 namespace mjray {
@@ -68,6 +71,40 @@ TEST(EmbreeExactHits, EveryHitIsBruteForcesBitForBit) {
     if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";
     test::expect_identical_hits(*c, EmbreeAccelerator(*c->prims));
   }
+}
+
+// mjray's traversal over a tree from Embree's builder (mjray-bench --tree): a tree built
+// elsewhere, with or without split references, still gives brute force's hits bit for bit.
+TEST(EmbreeBuiltTree, MjraysTraversalOfItIsBruteForceBitForBit) {
+  for (const bool splits : {false, true}) {
+    for (const std::string name : {"surfaces", "cornell", "mixed", "shapes", "bunny_low", "spot"}) {
+      SCOPED_TRACE(name + (splits ? " with spatial splits" : ""));
+      const OracleCase* c = test::oracle_case(name);
+      if (!c) GTEST_SKIP() << "../shared (models) is absent; set MJRAY_SHARED_DIR to run this test";
+      BvhTree tree = embree_built_tree(*c->prims, {.spatial_splits = splits, .threads = 2});
+      // Every primitive is in some leaf, splits or not, and leaves respect the size asked for.
+      std::vector<uint32_t> in_leaves = tree.order;
+      std::sort(in_leaves.begin(), in_leaves.end());
+      in_leaves.erase(std::unique(in_leaves.begin(), in_leaves.end()), in_leaves.end());
+      EXPECT_EQ(in_leaves.size(), c->prims->size());
+      for (const BvhWideNode& node : tree.nodes)
+        for (size_t i = 0; i < size_t(kBvhWidth); ++i)
+          if (node.is_leaf(i)) {
+            EXPECT_LE(node.count(i), 4u);
+          }
+      test::expect_identical_hits(*c, Bvh(*c->prims, std::move(tree), 2));
+    }
+  }
+}
+
+TEST(EmbreeBuiltTree, LeavesLargerThanALeafWordHoldsAreRefused) {
+  PrimitiveSet world;
+  test::add_mesh(world, one_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+  EXPECT_THROW(embree_built_tree(world, {.max_leaf_size = 8}), SceneError);
+  EXPECT_THROW(embree_built_tree(world, {.max_leaf_size = 0}), SceneError);
+  const BvhTree tree = embree_built_tree(world, {});
+  ASSERT_EQ(tree.nodes.size(), 1u);
+  EXPECT_EQ(tree.order, std::vector<uint32_t>{0});
 }
 
 TEST(EmbreeAdapter, BarycentricsAreMjrays) {
