@@ -59,8 +59,9 @@ trap 'rm -rf "$TMP"' EXIT
 } | tee "$OUT/povray.meta"
 
 # The settings of each scene's header.
-# glass-t0.3 is glass with mjray's anti-aliasing threshold raised from its default 0.1 to
-# POV-Ray's +A0.3, so that both supersample by the same colour difference.
+# glass-t0.3 is glass with mjray's anti-aliasing threshold raised from its default 0.1 to 0.3.
+# Not POV-Ray's +A0.3: POV-Ray sums the three channels' differences, mjray takes the largest,
+# so on grey edges mjray's default 0.1 is the like-for-like setting (docs/performance.md §7).
 mjray_options() {
   case $1 in
     spheres) echo "-r 4" ;;
