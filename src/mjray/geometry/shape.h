@@ -3,7 +3,8 @@
 /// by a transform (gr.sphere and gr.nh_sphere, gr.cube and gr.nh_box).
 ///
 /// To add a shape: write `<name>.h/.cpp` with the unit primitive's intersection, a struct
-/// below with `object_bounds()`, `object_bounding_sphere()`, `intersect(object_ray, t_range)`,
+/// below with `object_bounds()`, `object_bounding_sphere()`, `intersect(object_ray, t_range)`
+/// (convex: see kMaxShapeCrossings),
 /// `surface(object_point)` and `uv(surface_point)`,
 /// add it to `Shape`, bind it in `lua/gr_bindings.cpp`, and test it in
 /// `tests/unit/geometry/geometry_test.cpp` (the accelerator oracles then cover it).
@@ -62,5 +63,9 @@ struct UnitCube {
 };
 
 using Shape = std::variant<UnitSphere, UnitCube>;
+
+/// Every shape is convex and its intersect() returns its entry or its exit, nothing else: a ray
+/// crosses a shape at most this many times (a shadow ray through glass stops looking after).
+constexpr int kMaxShapeCrossings = 2;
 
 }  // namespace mjray

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <span>
 
+#include "mjray/geometry/shape.h"
+
 namespace mjray {
 
 namespace {
@@ -27,10 +29,12 @@ class TransmissiveHits final : public HitFilter {
       blocker = hit.prim;
       return true;
     }
-    for (std::optional<Hit> crossing = hit; crossing;) {
+    const int most = prims_.is_triangle(hit.prim) ? 1 : kMaxShapeCrossings;
+    std::optional<Hit> crossing = hit;
+    for (int crossed = 0; crossing;) {
       if (count_ == kCapacity) return true;
       hits_[size_t(count_++)] = *crossing;
-      if (prims_.is_triangle(hit.prim)) break;
+      if (++crossed == most) break;
       // Past the float t just found: the shape's own root, rounded down to it, may lie above.
       crossing = prims_.intersect(hit.prim, ray_, {std::nextafter(crossing->t, kInfinity), t_max_});
     }
