@@ -25,7 +25,9 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
     in_front += cosine > 0;
   }
   if (in_front != 0 && in_front != 4) return;
-  const auto pyramid = LightPyramid::make(offset_origin(si, region[0] - si.point), region);
+  // Every sample's direction has the corners' side, so offset_origin moves each the same way.
+  origin_ = offset_origin(si, region[0] - si.point);
+  const auto pyramid = LightPyramid::make(*origin_, region);
   if (!pyramid) return;
   const uint32_t own = in_front == 4 ? si.prim : kNoPrimitive;
   const auto found = accel.region_primitives(*pyramid, own, std::span(candidates_).first(kCapacity));

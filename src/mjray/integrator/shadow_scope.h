@@ -39,11 +39,15 @@ class ShadowScope {
   bool whole_scene() const { return !list_; }
   /// What answers the rays' visibility queries.
   const Accelerator& occluders() const { return *occluders_; }
+  /// The origin spawn_ray_to gives every sample's shadow ray, when the light lies wholly on one
+  /// side of the surface by a clear angle (always so for a clear scope or a list); else null.
+  const Point3* shared_origin() const { return origin_ ? &*origin_ : nullptr; }
 
  private:
   std::array<uint32_t, kCapacity + 1> candidates_;  // one more for the shading point's own primitive
   std::optional<PrimitiveList> list_;
   const Accelerator* occluders_;
+  std::optional<Point3> origin_;
   bool clear_ = false;
 };
 
