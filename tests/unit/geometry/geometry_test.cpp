@@ -14,17 +14,11 @@
 #include "mjray/geometry/triangle.h"
 #include "mjray/geometry/spawn_ray.h"
 #include "mjray/scene/flatten.h"
+#include "support/random_vectors.h"
 #include "support/scene_builder.h"
 
 namespace mjray {
 namespace {
-
-Vector3 random_direction(std::mt19937& rng) {
-  std::normal_distribution<float> g;
-  Vector3 d;
-  do d = {g(rng), g(rng), g(rng)}; while (length(d) < 1e-3f);
-  return normalize(d);
-}
 
 World world_of(std::shared_ptr<const SceneNode> root) {
   RenderJob job;
@@ -64,9 +58,9 @@ TEST(Geometry, RaysFromInsideClosedMeshAlwaysHit) {
   std::uniform_real_distribution<float> u(0, 0.9f);
   for (int i = 0; i < 20000; ++i) {
     // A point inside the ellipsoid (the polygonal sphere holds the sphere of radius 0.99).
-    const Vector3 offset = random_direction(rng) * u(rng);
+    const Vector3 offset = test::random_unit_vector(rng) * u(rng);
     const Point3 inside(3 + 2 * offset.x, -2 + offset.y, 7 + 3 * offset.z);
-    ASSERT_TRUE(accel.intersect({inside, random_direction(rng)}, {})) << "ray " << i;
+    ASSERT_TRUE(accel.intersect({inside, test::random_unit_vector(rng)}, {})) << "ray " << i;
   }
 }
 
@@ -82,14 +76,14 @@ TEST(Geometry, SpawnedRaysNeverReHitTheirSurface) {
   const Point3 centre = far(Point3(0, 0, 0));
   int spawned = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Point3 origin = centre + random_direction(rng) * 40.f;
+    const Point3 origin = centre + test::random_unit_vector(rng) * 40.f;
     const Point3 target = far(Point3(std::uniform_real_distribution<float>(-10, 10)(rng), 0, 0));
     const Ray aimed{origin, normalize(target - origin)};
     const auto hit = accel.intersect(aimed, {});
     if (!hit) continue;
     const SurfaceInteraction si = world.interaction(aimed, *hit);
     // Leave on the side the ray came from, in a random direction of that hemisphere.
-    Vector3 d = random_direction(rng);
+    Vector3 d = test::random_unit_vector(rng);
     if (dot(d, si.geometric_normal) * dot(aimed.direction, si.geometric_normal) > 0) d = -d;
     const auto again = accel.intersect(spawn_ray(si, d), {});
     if (again) {
@@ -160,7 +154,7 @@ TEST(Geometry, ShapeHitsLieWithinTheirWorldBoxes) {
       // Aim at a point on the box's top face from up to 1000 units away, mostly grazing.
       const Point3 target{box.lo.x + unit(rng) * (box.hi.x - box.lo.x), box.hi.y - unit(rng) * unit(rng) * 2,
                           box.lo.z + unit(rng) * (box.hi.z - box.lo.z)};
-      const Vector3 away = random_direction(rng);
+      const Vector3 away = test::random_unit_vector(rng);
       const Ray ray{target + away * (1 + 1000 * unit(rng)), -away};
       const auto hit = set.intersect(prim, ray, {});
       if (!hit) continue;

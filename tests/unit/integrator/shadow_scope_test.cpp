@@ -9,17 +9,10 @@
 
 #include "mjray/accel/bvh.h"
 #include "mjray/geometry/spawn_ray.h"
+#include "support/random_vectors.h"
 
 namespace mjray {
 namespace {
-
-Vector3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<float> normal;
-  for (;;) {
-    const Vector3 v{normal(rng), normal(rng), normal(rng)};
-    if (length(v) > 1e-3f) return normalize(v);
-  }
-}
 
 TEST(ShadowScope, TheSharedOriginIsSpawnRayTosForEverySample) {
   // Random surfaces and lights, some lights nearly in the surface's plane; one triangle far
@@ -34,13 +27,13 @@ TEST(ShadowScope, TheSharedOriginIsSpawnRayTosForEverySample) {
     SurfaceInteraction si;
     si.point = Point3{20 * uniform(rng), 20 * uniform(rng), 20 * uniform(rng)};
     si.point_error = Vector3{uniform(rng), uniform(rng), uniform(rng)} * 1e-5f;
-    const Vector3 n = random_unit(rng);
+    const Vector3 n = test::random_unit_vector(rng);
     si.geometric_normal = si.shading_normal = Normal3{n.x, n.y, n.z};
     si.prim = 7;  // not in the accelerator: nothing of the surface's own to find
     // A light anywhere around, or close to the tangent plane (within a few degrees).
-    Vector3 to_light = random_unit(rng) * (1 + 10 * uniform(rng));
+    Vector3 to_light = test::random_unit_vector(rng) * (1 + 10 * uniform(rng));
     if (trial % 3 == 0) to_light = to_light - Vector3(n) * (dot(n, to_light) * (1 - 0.05f * uniform(rng)));
-    const Vector3 e1 = random_unit(rng) * (0.05f + uniform(rng)), e2 = random_unit(rng) * (0.05f + uniform(rng));
+    const Vector3 e1 = test::random_unit_vector(rng) * (0.05f + uniform(rng)), e2 = test::random_unit_vector(rng) * (0.05f + uniform(rng));
     const Light light = AreaLight{si.point + to_light - e1 * 0.5f - e2 * 0.5f, e1, e2, {1, 1, 1}, {1, 0, 0}};
     const ShadowScope scope(prims, bvh, si, light, ShadowScope::kNoPrimitive);
     const Point3* origin = scope.shared_origin();

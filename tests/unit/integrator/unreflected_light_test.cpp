@@ -8,16 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "support/random_vectors.h"
+
 namespace mjray {
 namespace {
-
-Vector3 random_unit(std::mt19937& rng) {
-  std::normal_distribution<float> normal;
-  for (;;) {
-    const Vector3 v{normal(rng), normal(rng), normal(rng)};
-    if (length(v) > 1e-3f) return normalize(v);
-  }
-}
 
 /// The Phong term of the light sample at u, as the integrator computes it.
 Color reflected(const LocalShading& local, const ShadingFrame& frame, const Point3& point, const Light& light,
@@ -65,15 +59,15 @@ TEST(UnreflectedLight, EverySampleOfALightRuledOutIsExactlyBlack) {
   std::uniform_real_distribution<float> uniform(0, 1);
   int ruled_out = 0, near_limit = 0;
   for (int trial = 0; trial < 4000; ++trial) {
-    const Vector3 n = random_unit(rng);
-    Vector3 wo = random_unit(rng);
+    const Vector3 n = test::random_unit_vector(rng);
+    Vector3 wo = test::random_unit_vector(rng);
     if (dot(wo, n) < 0) wo = -wo;
     const ShadingFrame frame{wo, Normal3{n.x, n.y, n.z}, Normal3{n.x, n.y, n.z}};
     const float shininess = std::pow(10.f, 1 + 3 * uniform(rng));  // 10 to 10,000
     const LocalShading local{{0, 0, 0}, {0.8f, 0.5f, 1}, shininess};
     const Point3 point{uniform(rng), uniform(rng), uniform(rng)};
-    const Vector3 to_light = random_unit(rng) * (2 + 10 * uniform(rng));
-    const Vector3 edge1 = random_unit(rng) * (0.1f + 3 * uniform(rng)), edge2 = random_unit(rng) * (0.1f + 3 * uniform(rng));
+    const Vector3 to_light = test::random_unit_vector(rng) * (2 + 10 * uniform(rng));
+    const Vector3 edge1 = test::random_unit_vector(rng) * (0.1f + 3 * uniform(rng)), edge2 = test::random_unit_vector(rng) * (0.1f + 3 * uniform(rng));
     // Every other light a point: its one direction tests the bound's edge most closely.
     const Light light = trial % 2 ? Light(PointLight{point + to_light, {1, 1, 1}, {1, 0.1f, 0.01f}})
                                   : Light(AreaLight{point + to_light - edge1 * 0.5f - edge2 * 0.5f, edge1, edge2,
