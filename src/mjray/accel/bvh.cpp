@@ -23,6 +23,7 @@
 #endif
 
 #include "mjray/accel/bvh_builder.h"
+#include "mjray/core/error.h"
 #include "mjray/core/float_steps.h"
 #include "mjray/core/parallel_for.h"
 #include "mjray/geometry/triangle.h"
@@ -128,9 +129,12 @@ Bvh::Bvh(const PrimitiveSet& prims, BvhTree tree, int threads, BvhSimd simd)
 }
 
 void Bvh::write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_t> order) {
+  // A tree from elsewhere must name only its own order's entries and the set's primitives.
+  MJRAY_CHECK(size_t(first) + count <= order.size());
   float* run = leaf_data_.data() + size_t(first) * LeafRun::kLeafFloats;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t prim = order[first + i];
+    MJRAY_CHECK(prim < prims_.size());
     run[LeafRun::kIdRow * count + i] = std::bit_cast<float>(prim);
     if (!prims_.is_triangle(prim)) continue;  // a shape keeps zero corners
     const auto v = prims_.triangle_vertices(prim);
