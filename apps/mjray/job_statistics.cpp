@@ -65,7 +65,9 @@ std::string photon_json(const JobStatistics& s) {
 }  // namespace
 
 std::string summary_text(const JobStatistics& s) {
-  const std::string grid = s.grid_resolution ? " " + std::to_string(s.grid_resolution) + "³" : "";
+  // Appended piece by piece: GCC 12 warns falsely on "text" + a temporary string (its PR 105651).
+  std::string grid;
+  if (s.grid_resolution) grid.append(" ").append(std::to_string(s.grid_resolution)).append("³");
   char text[1024];
   std::snprintf(text, sizeof text,
                 "mjray: wrote %s\n"

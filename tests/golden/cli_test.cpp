@@ -51,7 +51,7 @@ class GoldenCli : public test::ScratchFolderTest {
   RunResult run(const std::vector<std::string>& args) {
     const fs::path out = logs_ / "stdout.txt", err = logs_ / "stderr.txt";
     std::string command = "cd / && " + quoted(test::mjray_binary().string());
-    for (const auto& arg : args) command += " " + quoted(arg);
+    for (const auto& arg : args) command.append(" ").append(quoted(arg));
     command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
     const int status = std::system(command.c_str());
     RunResult result;

@@ -52,7 +52,7 @@ TEST_P(CorpusRender, RendersUnchangedToTheSizeItAsksFor) {
   ASSERT_TRUE(std::filesystem::exists(script)) << script;
   const auto out = test::make_temp_dir("corpus");
   const auto log = out / "stderr.txt";
-  const std::string command = "'" + test::mjray_binary().string() + "' --quiet --outdir '" + out.string() +
+  const std::string command = "'" + test::mjray_binary().native() + "' --quiet --outdir '" + out.string() +
                               "' '" + script.string() + "' 2> '" + log.string() + "'";
   const int status = std::system(command.c_str());
   std::ifstream log_stream(log);

@@ -22,7 +22,7 @@ TEST_P(ShippedScene, RendersEveryImageItAsksForAtItsSize) {
   const auto& scene = GetParam();
   const auto out = test::make_temp_dir("scene");
   const auto log = out / "log.txt";
-  const std::string command = "'" + test::mjray_binary().string() + "' --quiet" + test::header_options(scene) +
+  const std::string command = "'" + test::mjray_binary().native() + "' --quiet" + test::header_options(scene) +
                               " --outdir '" + out.string() + "' '" + scene.string() + "' 2> '" + log.string() + "'";
   ASSERT_EQ(std::system(command.c_str()), 0) << command << "\n" << std::ifstream(log).rdbuf();
   const SceneDescription description = load_scene(scene, {});

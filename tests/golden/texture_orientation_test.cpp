@@ -41,7 +41,9 @@ std::string name(const Color& c) {
   if (c == kTopRight) return "green (top right)";
   if (c == kBottomLeft) return "blue (bottom left)";
   if (c == kBottomRight) return "white (bottom right)";
-  return "(" + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ")";
+  std::string text = "(";
+  text.append(std::to_string(c.r)).append(", ").append(std::to_string(c.g)).append(", ");
+  return text.append(std::to_string(c.b)).append(")");
 }
 
 void expect_upright_and_unmirrored(const Image& image, const std::string& face) {

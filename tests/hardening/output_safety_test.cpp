@@ -48,7 +48,7 @@ class HardeningOutput : public test::ScratchFolderTest {
   RunResult run(const std::vector<std::string>& args, const std::string& shell_prefix = "") {
     const fs::path err = logs_ / "stderr.txt";
     std::string command = "cd / && " + shell_prefix + shell_quoted(test::mjray_binary().string()) + " --quiet";
-    for (const auto& arg : args) command += " " + shell_quoted(arg);
+    for (const auto& arg : args) command.append(" ").append(shell_quoted(arg));
     command += " 2>" + shell_quoted(err.string()) + " >/dev/null </dev/null";
     const int status = std::system(("sh -c " + shell_quoted(command)).c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::read_file(err)};

@@ -18,7 +18,7 @@ namespace {
 /// What a browser sends as Host when it asks for `host_port` on a loopback address. A page
 /// of another site that a rebinding name points here sends its own name, and gets nothing.
 bool is_loopback_host(const std::string& host, int port) {
-  const std::string suffix = ":" + std::to_string(port);
+  const std::string suffix = std::string(":").append(std::to_string(port));  // not ":" + …: GCC 12 PR 105651
   if (!host.ends_with(suffix)) return false;
   std::string name = host.substr(0, host.size() - suffix.size());
   if (name == "localhost") return true;
