@@ -140,8 +140,11 @@ TEST(ImageWriterQuantise, EveryValueRoundsAsTheFormulaSays) {
   }
   for (int code_value = 0; code_value < 255; ++code_value) {
     const float edge = (float(code_value) + 0.5f) / 255.0f;
-    for (const float v : {std::nextafter(edge, 0.0f), edge, std::nextafter(edge, 1.0f)})
-      if (v > 0 && v < 1) EXPECT_EQ(to_8bit(v, OutputGamma::kLinear), formula(v)) << v;
+    for (const float v : {std::nextafter(edge, 0.0f), edge, std::nextafter(edge, 1.0f)}) {
+      if (v > 0 && v < 1) {
+        EXPECT_EQ(to_8bit(v, OutputGamma::kLinear), formula(v)) << v;
+      }
+    }
   }
 }
 
