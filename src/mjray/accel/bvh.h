@@ -35,6 +35,23 @@ struct alignas(32) BvhWideNode {
   /// Child i: an inner node's index, or a leaf (leaf_word); 0 in unused slots.
   std::array<uint32_t, kBvhWidth> child;
 
+  /// A node with no children yet: every slot's box is empty, which every ray misses.
+  static BvhWideNode without_children() {
+    BvhWideNode node{};
+    for (size_t k = 0; k < 3; ++k) {
+      node.bounds[k].fill(kInfinity);
+      node.bounds[k + 3].fill(-kInfinity);
+    }
+    return node;
+  }
+  /// Sets slot i's box.
+  void set_bounds(size_t i, const Bounds3& box) {
+    for (size_t k = 0; k < 3; ++k) {
+      bounds[k][i] = box.lo[int(k)];
+      bounds[k + 3][i] = box.hi[int(k)];
+    }
+  }
+
   /// The word of a leaf of `count` (1..7) primitives from `first`.
   static constexpr uint32_t leaf_word(uint32_t first, uint32_t count) { return kLeafFlag | first << kCountBits | count; }
   bool is_leaf(size_t i) const { return (child[i] & kLeafFlag) != 0; }

@@ -512,11 +512,7 @@ class Collapser {
 
     // Fill the slots; unused ones keep empty bounds (lo = +inf, hi = −inf).
     const uint32_t index = uint32_t(out.size());
-    BvhWideNode node{};
-    for (size_t k = 0; k < 3; ++k) {
-      node.bounds[k].fill(kInfinity);
-      node.bounds[k + 3].fill(-kInfinity);
-    }
+    BvhWideNode node = BvhWideNode::without_children();
     for (size_t i = 0; i < size_t(n); ++i) {
       const BvhNode& kid = binary_[kids[i]];
       for (size_t k = 0; k < 3; ++k) {

@@ -13,14 +13,14 @@ namespace mjray {
 
 namespace {
 
-constexpr unsigned kMaxLeaf = 7;  // what a leaf word's count holds
+constexpr unsigned kMaxLeaf = (1u << BvhWideNode::kCountBits) - 1;  // what a leaf word's count holds
 
 /// Embree's builder hands back whatever the callbacks make: this, for inner nodes and leaves
 /// alike, in memory Embree owns until the RTCBVH is released.
 struct BuiltNode {
   bool leaf;
   unsigned count;  // children, or primitives of a leaf
-  std::array<BuiltNode*, kBvhWidth> children;
+  std::array<const BuiltNode*, kBvhWidth> children;
   std::array<RTCBounds, kBvhWidth> bounds;
   std::array<uint32_t, kMaxLeaf> prims;
 };
@@ -37,7 +37,7 @@ void* create_node(RTCThreadLocalAllocator allocator, unsigned count, void*) {
 }
 
 void set_children(void* node, void** children, unsigned count, void*) {
-  for (unsigned i = 0; i < count; ++i) static_cast<BuiltNode*>(node)->children[i] = static_cast<BuiltNode*>(children[i]);
+  for (unsigned i = 0; i < count; ++i) static_cast<BuiltNode*>(node)->children[i] = static_cast<const BuiltNode*>(children[i]);
 }
 
 void set_bounds(void* node, const RTCBounds** bounds, unsigned count, void*) {
@@ -95,17 +95,9 @@ void split_reference(const RTCBuildPrimitive* ref, unsigned axis, float position
 /// Appends the wide node of an inner BuiltNode and its subtree, depth first; returns its index.
 uint32_t append_wide(const BuiltNode& built, BvhTree& tree) {
   const auto index = uint32_t(tree.nodes.size());
-  BvhWideNode node{};
-  for (size_t k = 0; k < 3; ++k) {
-    node.bounds[k].fill(kInfinity);
-    node.bounds[k + 3].fill(-kInfinity);
-  }
+  BvhWideNode node = BvhWideNode::without_children();
   for (size_t i = 0; i < built.count; ++i) {
-    const Bounds3 b = bounds_of(built.bounds[i]);
-    for (size_t k = 0; k < 3; ++k) {
-      node.bounds[k][i] = b.lo[int(k)];
-      node.bounds[k + 3][i] = b.hi[int(k)];
-    }
+    node.set_bounds(i, bounds_of(built.bounds[i]));
     const BuiltNode& child = *built.children[i];
     if (!child.leaf) continue;
     node.child[i] = BvhWideNode::leaf_word(uint32_t(tree.order.size()), child.count);
@@ -163,7 +155,7 @@ BvhTree embree_built_tree(const PrimitiveSet& prims, const EmbreeTreeOptions& op
   if (root && root->leaf) {
     // One leaf: the only child of a wide root.
     BuiltNode only{false, 1, {}, {}, {}};
-    only.children[0] = const_cast<BuiltNode*>(root);
+    only.children[0] = root;
     only.bounds[0] = rtc_bounds(tree.bounds);
     append_wide(only, tree);
   } else if (root) {

@@ -4,6 +4,7 @@
 /// rendering.
 
 #include "mjray/accel/bvh.h"
+#include "mjray/accel/bvh_builder.h"
 #include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
@@ -11,8 +12,8 @@ namespace mjray {
 /// How Embree builds the tree; the defaults are mjray's own builder's cost model and leaves.
 struct EmbreeTreeOptions {
   bool spatial_splits = false;  ///< Embree's high-quality build, which splits triangles' references
-  int max_leaf_size = 4;        ///< 1..7 primitives a leaf
-  float traversal_cost = 2;     ///< SAH cost of a node relative to one primitive test
+  int max_leaf_size = BvhBuildOptions{}.max_leaf_size;         ///< 1..7 primitives a leaf
+  float traversal_cost = BvhBuildOptions{}.traversal_cost;     ///< SAH cost of a node relative to one primitive test
   int threads = 0;              ///< 0 = all cores
 };
 

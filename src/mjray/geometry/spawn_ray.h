@@ -47,10 +47,12 @@ inline Ray spawn_ray(const SurfaceInteraction& si, const Vector3& direction) {
   return {offset_origin(si, direction), direction};
 }
 
+/// The ray from `origin` whose t = 1 is `target`.
+inline Ray ray_to(const Point3& origin, const Point3& target) { return {origin, target - origin}; }
+
 /// A ray from the surface toward `target`, for t in (0, kShadowTMax): t = 1 is the target.
 inline Ray spawn_ray_to(const SurfaceInteraction& si, const Point3& target) {
-  const Point3 origin = offset_origin(si, target - si.point);
-  return {origin, target - origin};
+  return ray_to(offset_origin(si, target - si.point), target);
 }
 
 /// The t_max of a spawn_ray_to ray: stops just short of the target.

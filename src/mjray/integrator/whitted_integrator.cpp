@@ -103,7 +103,7 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
   ++state.rays.shadow;
   // spawn_ray_to's ray, its origin found once for all of the light's samples where it can be.
   const Point3* origin = scope.shared_origin();
-  const Ray shadow = origin ? Ray{*origin, sample.position - *origin} : spawn_ray_to(si, sample.position);
+  const Ray shadow = origin ? ray_to(*origin, sample.position) : spawn_ray_to(si, sample.position);
   // The primitive that blocked the last shadow ray toward this light mostly blocks this one
   // (a scope's list already holds it first).
   uint32_t* cached = state.occluders.slot(light_index);

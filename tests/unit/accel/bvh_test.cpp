@@ -333,14 +333,9 @@ TEST(BvhBuild, MakeAcceleratorBuildsTheBvh) {
 BvhTree two_leaf_tree() {
   BvhTree tree;
   tree.bounds = {{0, 0, 0}, {2, 1, 1}};
-  BvhWideNode root{};
-  for (size_t k = 0; k < 3; ++k) {
-    root.bounds[k].fill(kInfinity);
-    root.bounds[k + 3].fill(-kInfinity);
-  }
+  BvhWideNode root = BvhWideNode::without_children();
   for (size_t i = 0; i < 2; ++i) {
-    root.bounds[0][i] = float(i), root.bounds[1][i] = 0, root.bounds[2][i] = 0;
-    root.bounds[3][i] = float(i + 1), root.bounds[4][i] = 1, root.bounds[5][i] = 1;
+    root.set_bounds(i, {{float(i), 0, 0}, {float(i + 1), 1, 1}});
     root.child[i] = BvhWideNode::leaf_word(uint32_t(i), 1);
   }
   tree.nodes.push_back(root);
