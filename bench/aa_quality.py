@@ -32,6 +32,9 @@ MJRAY_SETTINGS = [
     ["-a", "3", "--aa-threshold", "0.3"],
     ["-a", "2"],
     ["-a", "0"],
+    ["-a", "3", "--aa-method", "subdivide"],
+    ["-a", "3", "--aa-method", "subdivide", "--aa-threshold", "0.07"],
+    ["-a", "8", "--aa-method", "subdivide"],
 ]
 POV_SETTINGS = [
     ["+A0.3", "+AM2", "+R3"],  # the twin's header

@@ -21,6 +21,7 @@ struct CommandLine {
   int area_light_samples = 1;          // -s
   int antialias_samples = 0;           // -a
   float antialias_threshold = 0.1f;    // --aa-threshold
+  AntialiasMethod antialias_method = AntialiasMethod::kGrid;  // --aa-method
   std::string accel;                   // --accel; empty = decided by -g/-o or bvh
   int threads = 0;                     // -j
   std::optional<std::filesystem::path> output;  // --output

@@ -73,7 +73,8 @@ void RenderWatcher::loop() {
     const double elapsed = seconds_since(start);
     estimate_.update(render_.progress(), elapsed);
     // During the first pass, how much anti-aliasing the finished tiles will need.
-    if (!options_.quiet && options_.render.antialias_samples > 0 && render_.progress().antialias_pass == 0 &&
+    if (!options_.quiet && options_.render.antialias_samples > 0 && !options_.render.subdivides() &&
+        render_.progress().antialias_pass == 0 &&
         seconds_since(last_share) >= kShareInterval) {
       estimate_.set_first_pass_share(
           supersample_share(render_.snapshot(), options_.render.tile_size, options_.render.antialias_threshold));

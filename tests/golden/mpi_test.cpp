@@ -155,6 +155,20 @@ TEST_F(MpiRender, GlassSceneWithAntialiasingIsTheSameBytesForOneTwoAndThreeRanks
   }
 }
 
+TEST_F(MpiRender, SubdividedAntialiasingIsTheSameBytesForOneAndTwoRanks) {
+  // Corners that two ranks' tiles share are traced by both, keyed by their place in the image.
+  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'", 600));
+  const std::vector<std::string> options = {"--quiet", "-a", "3", "--aa-method", "subdivide", "-s", "2"};
+  ASSERT_EQ(run(mjray(plus(options, {"--output", (dir_ / "ref.png").string(), scene.string()}))), 0);
+  const std::string reference = read_file(dir_ / "ref.png");
+  ASSERT_FALSE(reference.empty());
+  const auto out = dir_ / "np2.png";
+  const auto log = dir_ / "log.txt";
+  ASSERT_EQ(run(plus(plus(mpirun(2), options), {"-j", "1", "--distribute", "tiles", "--output", out.string(), scene.string()}),
+                log), 0) << read_file(log);
+  EXPECT_EQ(read_file(out), reference);
+}
+
 TEST_F(MpiRender, PhotonMapsAreTheSameBytesForOneAndTwoRanks) {
   // Every rank builds the same caustic and global maps (photons keyed by the seed), so the
   // ranks' tiles agree with mjray's image.

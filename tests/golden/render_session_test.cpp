@@ -55,28 +55,30 @@ struct Fixture {
 
 TEST(GoldenRender, IdenticalForAnyThreadCountTileSizeAndAntialiasing) {
   Fixture f;
-  for (const int aa : {0, 3}) {
+  for (const auto& [aa, method] : {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
     RenderSettings base;
     base.threads = 1;
     base.antialias_samples = aa;
+    base.antialias_method = method;
     const Image reference = render_image(f.camera, 64, 64, f.integrator, base);
     for (const auto& [threads, tile] : {std::pair{2, 16}, {3, 16}, {2, 5}, {3, 64}}) {
       RenderSettings s = base;
       s.threads = threads;
       s.tile_size = tile;
       EXPECT_EQ(render_image(f.camera, 64, 64, f.integrator, s).pixels(), reference.pixels())
-          << threads << " threads, tile " << tile << ", -a " << aa;
+          << threads << " threads, tile " << tile << ", -a " << aa << (base.subdivides() ? " subdivided" : "");
     }
   }
 }
 
 TEST(GoldenRender, StopAfterSomeTilesThenResumeGivesTheSameImage) {
   Fixture f;
-  for (const int aa : {0, 3}) {
+  for (const auto& [aa, method] : {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
     RenderSettings s;
     s.threads = 2;
     s.tile_size = 8;
     s.antialias_samples = aa;
+    s.antialias_method = method;
     const Image reference = render_image(f.camera, 64, 64, f.integrator, s);
     for (const int stop_after : {1, 17, 40}) {
       ImageRender first(f.camera, 64, 64, f.integrator, s);
@@ -88,7 +90,8 @@ TEST(GoldenRender, StopAfterSomeTilesThenResumeGivesTheSameImage) {
       ImageRender second(f.camera, 64, 64, f.integrator, s);
       second.resume_from(read_checkpoint(dir / "state"));
       ASSERT_TRUE(second.run());
-      EXPECT_EQ(second.image().pixels(), reference.pixels()) << "stopped after " << stop_after << ", -a " << aa;
+      EXPECT_EQ(second.image().pixels(), reference.pixels())
+          << "stopped after " << stop_after << ", -a " << aa << (s.subdivides() ? " subdivided" : "");
       std::filesystem::remove_all(dir);
     }
   }

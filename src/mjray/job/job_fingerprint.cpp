@@ -73,6 +73,8 @@ std::string JobFingerprints::of(size_t index) const {
   line("-s", std::to_string(o.integrator.area_light_samples));
   line("-a", std::to_string(o.render.antialias_samples));
   line("--aa-threshold", number(o.render.antialias_threshold));
+  // Only when not the default, so that states saved before the option existed still resume.
+  if (o.render.antialias_method == AntialiasMethod::kSubdivide) line("--aa-method", "subdivide");
   line("anti-aliasing passes", std::to_string(o.render.antialias_max_passes));
   line("--seed", std::to_string(o.render.seed));
   // Only when on, so that states saved before these options existed still resume.

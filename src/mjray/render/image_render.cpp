@@ -25,7 +25,8 @@ uint64_t antialias_samples(const SamplingSettings& s) {
 
 PixelRect rendered_region(int width, int height, const RenderSettings& settings) {
   if (!settings.crop) return {0, 0, width, height};
-  const int margin = settings.antialias_samples > 0 ? 2 * std::max(0, settings.antialias_max_passes) : 0;
+  // Subdivided pixels depend on nothing outside themselves.
+  const int margin = settings.antialias_samples > 0 && !settings.subdivides() ? 2 * std::max(0, settings.antialias_max_passes) : 0;
   const PixelRect& c = *settings.crop;
   return {std::max(0, c.x0 - margin), std::max(0, c.y0 - margin), std::min(width, c.x1 + margin),
           std::min(height, c.y1 + margin)};
@@ -107,7 +108,7 @@ bool ImageRender::plan_pass() {
 }
 
 bool ImageRender::run_antialiasing() {
-  if (settings_.antialias_samples <= 0) return true;
+  if (settings_.antialias_samples <= 0 || settings_.subdivides()) return true;
   const uint64_t samples_per_pixel = antialias_samples(settings_);
   while (antialias_pass_ <= settings_.antialias_max_passes) {
     if (stop_.stop_requested()) return false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "mjray/core/error.h"
+#include "mjray/render/subdivided_pixel.h"
 
 namespace mjray {
 
@@ -28,6 +29,7 @@ Color ImageSampler::trace(float sx, float sy, RandomStream& random, TraceState& 
 }
 
 void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state) const {
+  if (settings_.subdivides()) return first_pass_subdivided(rect, film, state);
   const int n = settings_.samples_per_pixel;
   const StratifiedGrid grid = stratified_grid(n);
   for (int y = rect.y0; y < rect.y1; ++y)
@@ -62,6 +64,46 @@ FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
       sum += trace(sx, sy, random, state);
     }
   return {sum, float(columns * rows)};
+}
+
+void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const {
+  const int cells = SubdivisionLattice::finest_for(settings_.antialias_samples).cells();
+  const int spp = std::max(1, settings_.samples_per_pixel);
+  const uint64_t image_columns = uint64_t(image_width_) * uint64_t(cells) + 1;
+  // The lattice points of one row of pixels, cells + 1 rows of them; its last row is the next
+  // pixel row's first.
+  const size_t columns = size_t(rect.x1 - rect.x0) * size_t(cells) + 1;
+  std::vector<Color> colours(columns * size_t(cells + 1));
+  std::vector<uint8_t> known(colours.size(), 0);
+  for (int y = rect.y0; y < rect.y1; ++y) {
+    if (y > rect.y0) {
+      const size_t last = columns * size_t(cells);
+      std::copy(colours.begin() + std::ptrdiff_t(last), colours.end(), colours.begin());
+      std::copy(known.begin() + std::ptrdiff_t(last), known.end(), known.begin());
+      std::fill(known.begin() + std::ptrdiff_t(columns), known.end(), 0);
+    }
+    const uint64_t gy0 = uint64_t(y + region_.y0) * uint64_t(cells);
+    for (int x = rect.x0; x < rect.x1; ++x) {
+      const size_t lx0 = size_t(x - rect.x0) * size_t(cells);
+      const uint64_t gx0 = uint64_t(x + region_.x0) * uint64_t(cells);
+      const auto corner = [&](int i, int j) -> const Color& {
+        const size_t k = size_t(j) * columns + lx0 + size_t(i);
+        if (known[k]) return colours[k];
+        const uint64_t gx = gx0 + uint64_t(i), gy = gy0 + uint64_t(j);
+        Color sum;
+        for (int s = 0; s < spp; ++s) {
+          RandomStream random(settings_.seed, gy * image_columns + gx, subdivision_sample_index(uint32_t(s)));
+          // Jittered by up to half a cell either way, as POV-Ray's +J1.
+          const float sx = (float(gx) + random.uniform() - 0.5f) / float(cells);
+          const float sy = (float(gy) + random.uniform() - 0.5f) / float(cells);
+          sum += trace(sx, sy, random, state);
+        }
+        known[k] = 1;
+        return colours[k] = sum / float(spp);
+      };
+      film.add(x, y, subdivided_estimate(0, 0, cells, settings_.antialias_threshold, corner));
+    }
+  }
 }
 
 }  // namespace mjray

@@ -11,15 +11,25 @@
 
 namespace mjray {
 
+/// How -a anti-aliases (--aa-method).
+enum class AntialiasMethod {
+  kGrid,       ///< bad pixels and their neighbours get N×N jittered cells each (the original's)
+  kSubdivide,  ///< every pixel is subdivided from its corners (subdivided_pixel.h), in one pass
+};
+
 /// How camera samples are placed.
 struct SamplingSettings {
   uint64_t seed = 0;                ///< --seed: keys every random number
   int antialias_samples = 0;        ///< -a: N×N jittered samples in bad pixels; 0 = off
+  AntialiasMethod antialias_method = AntialiasMethod::kGrid;  ///< --aa-method
   float antialias_threshold = 0.1f; ///< --aa-threshold: neighbour difference that makes a pixel bad
   int antialias_max_passes = 4;     ///< passes of adaptive supersampling at most
   /// --spp: stratified first-pass samples in every pixel (1 = the pixel centre). A bad pixel's
   /// anti-aliasing estimate then has -a² times as many: N×N cells of this many each.
   int samples_per_pixel = 1;
+
+  /// Whether the first pass subdivides every pixel, leaving no anti-aliasing passes.
+  bool subdivides() const { return antialias_samples > 0 && antialias_method == AntialiasMethod::kSubdivide; }
 };
 
 /// The random stream of a camera sample is keyed by (seed, pixel, sample index); draws within
@@ -29,8 +39,12 @@ struct SamplingSettings {
 /// Sample indices of the passes are disjoint:
 ///   first pass sample s (s < --spp; the pixel centre when --spp is 1): s · 2³²
 ///   adaptive anti-aliasing sample k of a pixel (k < N²·spp):           k + 1
+///   --aa-method subdivide, sample s (s < spp) of a lattice point:        2³¹ + s + 1
+/// A subdivided pixel's lattice points are keyed by their place in the image's lattice rather
+/// than by pixel, so a corner that pixels (or tiles, or processes) share is the same sample.
 constexpr uint64_t first_pass_sample_index(uint32_t s) { return uint64_t(s) << 32; }
 constexpr uint64_t antialias_sample_index(uint32_t k) { return uint64_t(k) + 1; }
+constexpr uint64_t subdivision_sample_index(uint32_t s) { return antialias_sample_index((uint32_t(1) << 31) + s); }
 
 /// A stratified grid of n cells over a pixel: columns × rows = n, as square as n's divisors
 /// allow (16: 4×4, 8: 4×2, 7: 7×1).
@@ -59,7 +73,8 @@ class ImageSampler {
   const SamplingSettings& settings() const { return settings_; }
 
   /// The first pass over `rect` (region coordinates): --spp stratified samples per pixel
-  /// (one through the centre when --spp is 1), added to `film`.
+  /// (one through the centre when --spp is 1), added to `film`; with settings().subdivides(),
+  /// each pixel's subdivided estimate instead.
   void first_pass(const PixelRect& rect, Film& film, TraceState& state) const;
   /// The adaptive anti-aliasing estimate of region pixel (x, y): N×N jittered cells of --spp
   /// stratified samples each, which replace the pixel's first-pass estimate (the original's
@@ -68,6 +83,7 @@ class ImageSampler {
 
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }
+  void first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const;
   /// The radiance of the camera sample at image position (sx, sy), drawing the lens point first.
   Color trace(float sx, float sy, RandomStream& random, TraceState& state) const;
 

@@ -52,12 +52,21 @@ TEST(CommandLine, CameraImageAndAnimationOptionsReachTheJobOptions) {
 TEST(CommandLine, DefaultsChangeNothing) {
   const JobOptions o = job_options(parse({}));
   EXPECT_EQ(o.render.samples_per_pixel, 1);
+  EXPECT_EQ(o.render.antialias_method, AntialiasMethod::kGrid);
   EXPECT_FALSE(o.view.aperture_radius || o.view.focus_distance || o.view.width || o.render.crop || o.frames);
   EXPECT_EQ(o.outputs.encoding.bit_depth, 8);
   const CommandLine one = parse({"--frames", "5"});
   EXPECT_EQ(one.frames->first, 5);
   EXPECT_EQ(one.frames->last, 5);
   EXPECT_EQ(parse({"--aperture", "0"}).aperture_radius, 0.f);
+}
+
+TEST(CommandLine, AaMethodReachesTheRenderSettings) {
+  const JobOptions o = job_options(parse({"-a", "3", "--aa-method", "subdivide"}));
+  EXPECT_EQ(o.render.antialias_method, AntialiasMethod::kSubdivide);
+  EXPECT_TRUE(o.render.subdivides());
+  EXPECT_FALSE(job_options(parse({"--aa-method", "subdivide"})).render.subdivides());  // without -a, nothing to do
+  EXPECT_EQ(job_options(parse({"-a", "3", "--aa-method", "grid"})).render.antialias_method, AntialiasMethod::kGrid);
 }
 
 TEST(CommandLine, MistakesSayWhatIsExpected) {
@@ -71,6 +80,7 @@ TEST(CommandLine, MistakesSayWhatIsExpected) {
             "--size 65536x65536 has more than 2^27 pixels (e.g. 16384x8192), the most mjray renders");
   for (const char* crop : {"1,2,3", "5,0,5,10", "0,0,10,-1", "a,b,c,d", "0,0,70000,5"})
     EXPECT_EQ(usage_error({"--crop", crop}).rfind("--crop expects X0,Y0,X1,Y1", 0), 0u) << crop;
+  EXPECT_EQ(usage_error({"--aa-method", "recursive"}), "--aa-method expects grid or subdivide, got 'recursive'");
   EXPECT_EQ(usage_error({"--bit-depth", "12"}), "--bit-depth expects 8 or 16, got '12'");
   EXPECT_EQ(usage_error({"--jpeg-quality", "101"}), "--jpeg-quality expects a whole number from 1 to 100, got '101'");
   EXPECT_EQ(usage_error({"--fps", "0"}), "--fps expects a whole number from 1 to 1000, got '0'");
