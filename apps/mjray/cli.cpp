@@ -365,7 +365,8 @@ options:
   -o                   uniform grid of the "optimal" size 3*cbrt(primitives); overrides -g
   -s N                 area-light samples: an N x N jittered grid (default 1)
   -a N                 adaptive anti-aliasing with N x N samples in bad pixels (default 0: off)
-  --aa-threshold T     colour difference from a neighbour that makes a pixel bad (default 0.1)
+  --aa-threshold T     colour difference from a neighbour that makes a pixel bad, or between a
+                       square's corners that splits it (default 0.1)
   --aa-method grid|subdivide
                        how -a works: grid, N x N jittered samples in each bad pixel and its
                        neighbours (default); subdivide, every pixel sampled at its corners,

@@ -9,9 +9,11 @@ namespace mjray {
 
 ProgressEstimate::ProgressEstimate(int width, int height, const RenderSettings& settings)
     : first_pass_samples_(double(width) * double(height) * std::max(1, settings.samples_per_pixel)),
-      samples_per_pixel_(settings.antialias_samples > 0 && !settings.subdivides() ? double(settings.antialias_samples) * settings.antialias_samples *
-                                                              std::max(1, settings.samples_per_pixel)
-                                                        : 0),
+      // Subdivision needs no anti-aliasing pass: all its work is in the first.
+      samples_per_pixel_(settings.antialias_samples > 0 && !settings.subdivides()
+                             ? double(settings.antialias_samples) * settings.antialias_samples *
+                                   std::max(1, settings.samples_per_pixel)
+                             : 0),
       max_passes_(settings.antialias_max_passes) {}
 
 void ProgressEstimate::update(const RenderProgress& progress, double elapsed) {

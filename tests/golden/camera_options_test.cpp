@@ -49,8 +49,9 @@ Image window_of(const Image& image, const PixelRect& r) {
 
 TEST(CameraOptions, ACropIsItsWindowOfTheWholeImageBitForBit) {
   for (const auto& [aa, spp, aperture, method] :
-       {std::tuple{0, 1, 0.f, AntialiasMethod::kGrid}, {3, 1, 0.f, AntialiasMethod::kGrid}, {2, 4, 0.08f, AntialiasMethod::kGrid},
-        {3, 1, 0.f, AntialiasMethod::kSubdivide}, {2, 2, 0.08f, AntialiasMethod::kSubdivide}}) {
+       {std::tuple{0, 1, 0.f, AntialiasMethod::kGrid}, {3, 1, 0.f, AntialiasMethod::kGrid},
+        {2, 4, 0.08f, AntialiasMethod::kGrid}, {3, 1, 0.f, AntialiasMethod::kSubdivide},
+        {2, 2, 0.08f, AntialiasMethod::kSubdivide}}) {
     JobOptions options = test::oracle_options({4, 4, 2});
     options.render.antialias_samples = aa;
     options.render.antialias_method = method;
@@ -63,7 +64,8 @@ TEST(CameraOptions, ACropIsItsWindowOfTheWholeImageBitForBit) {
       options.render.crop = crop;
       const Image cropped = test::TestJob(edge_scene(64, 48), options).render();
       EXPECT_EQ(cropped.pixels(), window_of(whole, crop).pixels())
-          << "-a " << aa << (options.render.subdivides() ? " subdivided" : "") << " --spp " << spp << " crop " << crop.x0 << "," << crop.y0 << "," << crop.x1 << "," << crop.y1;
+          << "-a " << aa << (options.render.subdivides() ? " subdivided" : "") << " --spp " << spp
+          << " crop " << crop.x0 << "," << crop.y0 << "," << crop.x1 << "," << crop.y1;
     }
   }
 }

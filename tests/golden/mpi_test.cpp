@@ -164,8 +164,8 @@ TEST_F(MpiRender, SubdividedAntialiasingIsTheSameBytesForOneAndTwoRanks) {
   ASSERT_FALSE(reference.empty());
   const auto out = dir_ / "np2.png";
   const auto log = dir_ / "log.txt";
-  ASSERT_EQ(run(plus(plus(mpirun(2), options), {"-j", "1", "--distribute", "tiles", "--output", out.string(), scene.string()}),
-                log), 0) << read_file(log);
+  const std::vector<std::string> two_ranks = {"-j", "1", "--distribute", "tiles", "--output", out.string(), scene.string()};
+  ASSERT_EQ(run(plus(plus(mpirun(2), options), two_ranks), log), 0) << read_file(log);
   EXPECT_EQ(read_file(out), reference);
 }
 

@@ -55,7 +55,8 @@ struct Fixture {
 
 TEST(GoldenRender, IdenticalForAnyThreadCountTileSizeAndAntialiasing) {
   Fixture f;
-  for (const auto& [aa, method] : {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
+  for (const auto& [aa, method] :
+       {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
     RenderSettings base;
     base.threads = 1;
     base.antialias_samples = aa;
@@ -73,7 +74,8 @@ TEST(GoldenRender, IdenticalForAnyThreadCountTileSizeAndAntialiasing) {
 
 TEST(GoldenRender, StopAfterSomeTilesThenResumeGivesTheSameImage) {
   Fixture f;
-  for (const auto& [aa, method] : {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
+  for (const auto& [aa, method] :
+       {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
     RenderSettings s;
     s.threads = 2;
     s.tile_size = 8;

@@ -165,20 +165,31 @@ double mean_error(const Image& a, const Image& b) {
   return sum / double(a.pixels().size());
 }
 
+/// `job` with 16×16 samples in every pixel that varies at all.
+Image converged(const RenderJob& job) {
+  JobOptions options = test::oracle_options();
+  options.render.threads = 0;
+  options.render.antialias_samples = 16;
+  options.render.antialias_threshold = 1e-6f;
+  options.render.antialias_max_passes = 100;
+  return test::render(job, options);
+}
+
+/// `job` at -a 4 by `method`, with its statistics in `stats`.
+Image antialiased(const RenderJob& job, AntialiasMethod method, RenderStats& stats) {
+  JobOptions options = test::oracle_options();
+  options.render.antialias_samples = 4;
+  options.render.antialias_method = method;
+  return test::TestJob(job, options).render(&stats);
+}
+
 TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
   const RenderJob job = edge_scene();
-  JobOptions reference_options = test::oracle_options();
-  reference_options.render.threads = 0;
-  reference_options.render.antialias_samples = 16;
-  reference_options.render.antialias_threshold = 1e-6f;  // every pixel that varies at all
-  reference_options.render.antialias_max_passes = 100;
-  const Image reference = test::render(job, reference_options);
+  const Image reference = converged(job);
 
   const Image plain = test::render(job);
-  JobOptions adaptive = test::oracle_options();
-  adaptive.render.antialias_samples = 4;
   RenderStats stats;
-  const Image smoothed = test::TestJob(job, adaptive).render(&stats);
+  const Image smoothed = antialiased(job, AntialiasMethod::kGrid, stats);
 
   EXPECT_LT(mean_error(smoothed, reference), 0.6 * mean_error(plain, reference));
   EXPECT_GT(stats.pixels_supersampled, 0u);
@@ -188,22 +199,12 @@ TEST(StatAntialiasing, AdaptiveSupersamplingLowersErrorOnFewPixels) {
 
 TEST(StatAntialiasing, SubdivisionLowersErrorNearlyAsMuchAsTheGridFromAboutTwoRaysAPixel) {
   const RenderJob job = edge_scene();
-  JobOptions reference_options = test::oracle_options();
-  reference_options.render.threads = 0;
-  reference_options.render.antialias_samples = 16;
-  reference_options.render.antialias_threshold = 1e-6f;
-  reference_options.render.antialias_max_passes = 100;
-  const Image reference = test::render(job, reference_options);
+  const Image reference = converged(job);
   const Image plain = test::render(job);
 
-  JobOptions grid = test::oracle_options();
-  grid.render.antialias_samples = 4;
-  RenderStats grid_stats;
-  const Image gridded = test::TestJob(job, grid).render(&grid_stats);
-  JobOptions subdivide = grid;
-  subdivide.render.antialias_method = AntialiasMethod::kSubdivide;
-  RenderStats stats;
-  const Image subdivided = test::TestJob(job, subdivide).render(&stats);
+  RenderStats grid_stats, stats;
+  const Image gridded = antialiased(job, AntialiasMethod::kGrid, grid_stats);
+  const Image subdivided = antialiased(job, AntialiasMethod::kSubdivide, stats);
 
   EXPECT_LT(mean_error(subdivided, reference), 0.6 * mean_error(plain, reference));
   // On this scene of few edges the grid is a little better (measured 1.13×) for 0.8× the rays;

@@ -26,7 +26,8 @@ uint64_t antialias_samples(const SamplingSettings& s) {
 PixelRect rendered_region(int width, int height, const RenderSettings& settings) {
   if (!settings.crop) return {0, 0, width, height};
   // Subdivided pixels depend on nothing outside themselves.
-  const int margin = settings.antialias_samples > 0 && !settings.subdivides() ? 2 * std::max(0, settings.antialias_max_passes) : 0;
+  const bool passes = settings.antialias_samples > 0 && !settings.subdivides();
+  const int margin = passes ? 2 * std::max(0, settings.antialias_max_passes) : 0;
   const PixelRect& c = *settings.crop;
   return {std::max(0, c.x0 - margin), std::max(0, c.y0 - margin), std::min(width, c.x1 + margin),
           std::min(height, c.y1 + margin)};

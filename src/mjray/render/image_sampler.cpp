@@ -1,6 +1,7 @@
 #include "mjray/render/image_sampler.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "mjray/core/error.h"
 #include "mjray/render/subdivided_pixel.h"

@@ -21,7 +21,8 @@ bool corners_differ(const Color& a, const Color& b, const Color& c, const Color&
   return spread(&Color::r) > threshold || spread(&Color::g) > threshold || spread(&Color::b) > threshold;
 }
 
-Color subdivided_estimate(int i, int j, int size, float threshold, const std::function<const Color&(int, int)>& corner) {
+Color subdivided_estimate(int i, int j, int size, float threshold,
+                          const std::function<const Color&(int, int)>& corner) {
   // Copied: the references corner() returns may not outlive the next call.
   const Color a = corner(i, j), b = corner(i + size, j), c = corner(i, j + size), d = corner(i + size, j + size);
   if (size == 1 || !corners_differ(a, b, c, d, threshold)) return (a + b + c + d) / 4.f;
