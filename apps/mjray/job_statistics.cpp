@@ -62,6 +62,13 @@ std::string photon_json(const JobStatistics& s) {
   return out;
 }
 
+/// What anti-aliasing did to the pixels, for the statistics' pixels line.
+std::string antialiasing_text(const RenderStats& r) {
+  if (r.subdivided) return "subdivided from their corners in the first pass (--aa-method subdivide)";
+  return std::to_string(r.pixels_supersampled) + " supersampled in " + std::to_string(r.antialias_passes) +
+         " anti-aliasing passes";
+}
+
 }  // namespace
 
 std::string summary_text(const JobStatistics& s) {
@@ -73,13 +80,12 @@ std::string summary_text(const JobStatistics& s) {
                 "mjray: wrote %s\n"
                 "  time      %.3fs total: parse %.3fs, build %.3fs (%s%s, %u primitives), render %.3fs on %d threads\n"
                 "  rays      %llu primary, %llu secondary, %llu shadow: %.2f M rays/s\n"
-                "  pixels    %llu supersampled in %d anti-aliasing passes\n"
+                "  pixels    %s\n"
                 "  memory    %.1f MiB peak\n",
                 s.image.c_str(), s.seconds_total(), s.seconds_parse, s.seconds_build, s.accel.c_str(), grid.c_str(), s.primitives,
                 s.seconds_render, s.render.threads, (unsigned long long)s.render.rays.primary,
                 (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
-                s.rays_per_second() / 1e6, (unsigned long long)s.render.pixels_supersampled,
-                s.render.antialias_passes, double(s.peak_rss_bytes) / kMiB);
+                s.rays_per_second() / 1e6, antialiasing_text(s.render).c_str(), double(s.peak_rss_bytes) / kMiB);
   std::string summary = text + photon_text(s);
   for (const RankStatistics& r : s.ranks) {
     std::snprintf(text, sizeof text,
@@ -99,11 +105,13 @@ std::string frame_line(const JobStatistics& s, const std::string& frame, bool de
     return text;
   }
   std::snprintf(text, sizeof text,
-                "mjray: wrote %s (%s): %.3fs (build %.3fs, render %.3fs), %llu rays at %.2f M rays/s, %llu pixels "
-                "supersampled, %.1f MiB peak\n",
+                "mjray: wrote %s (%s): %.3fs (build %.3fs, render %.3fs), %llu rays at %.2f M rays/s, %s, "
+                "%.1f MiB peak\n",
                 s.image.c_str(), frame.c_str(), s.seconds_total(), s.seconds_build, s.seconds_render,
                 (unsigned long long)s.render.rays.total(), s.rays_per_second() / 1e6,
-                (unsigned long long)s.render.pixels_supersampled, double(s.peak_rss_bytes) / (1024.0 * 1024.0));
+                s.render.subdivided ? "pixels subdivided"
+                                    : (std::to_string(s.render.pixels_supersampled) + " pixels supersampled").c_str(),
+                double(s.peak_rss_bytes) / (1024.0 * 1024.0));
   return text;
 }
 
@@ -118,6 +126,7 @@ std::string animation_summary(const std::vector<JobStatistics>& frames, size_t k
     all.render.threads = s.render.threads;
     all.render.pixels_supersampled += s.render.pixels_supersampled;
     all.render.antialias_passes += s.render.antialias_passes;
+    all.render.subdivided = all.render.subdivided || s.render.subdivided;
     all.primitives = std::max(all.primitives, s.primitives);
     all.peak_rss_bytes = std::max(all.peak_rss_bytes, s.peak_rss_bytes);
     if (all.accel.empty()) all.accel = s.accel;
@@ -192,6 +201,7 @@ std::string statistics_json(const JobStatistics& s) {
                 s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
                 (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
   std::string out = "{\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers;
+  if (s.render.subdivided) out += ", \"antialias_method\": \"subdivide\"";  // pixels_supersampled is then 0
   out += photon_json(s);
   if (!s.ranks.empty()) out += ranks_json(s.ranks);
   return out + "}";

@@ -47,7 +47,8 @@ RankStatistics get_rank(ByteReader& r) {
 void put_job(ByteWriter& w, const JobStatistics& s) {
   w.put_string(s.image).put(s.seconds_parse).put(s.seconds_build).put(s.seconds_render).put(s.primitives);
   w.put_string(s.accel).put(s.render.rays).put(s.render.seconds).put(int32_t(s.render.threads));
-  w.put(s.render.pixels_supersampled).put(int32_t(s.render.antialias_passes)).put(s.peak_rss_bytes);
+  w.put(s.render.pixels_supersampled).put(int32_t(s.render.antialias_passes)).put(uint8_t(s.render.subdivided));
+  w.put(s.peak_rss_bytes);
   w.put(uint64_t(s.ranks.size()));
   for (const RankStatistics& rank : s.ranks) put_rank(w, rank);
 }
@@ -65,6 +66,7 @@ JobStatistics get_job(ByteReader& r) {
   s.render.threads = r.get<int32_t>();
   s.render.pixels_supersampled = r.get<uint64_t>();
   s.render.antialias_passes = r.get<int32_t>();
+  s.render.subdivided = r.get<uint8_t>() != 0;
   s.peak_rss_bytes = r.get<uint64_t>();
   const auto ranks = r.get<uint64_t>();
   for (uint64_t i = 0; i < ranks; ++i) s.ranks.push_back(get_rank(r));

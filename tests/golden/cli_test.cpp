@@ -275,6 +275,20 @@ TEST_F(GoldenCli, AGridSmallerThanAskedForWarnsAndStatisticsReportItsSize) {
   EXPECT_NE(read_file(json).find("\"grid_resolution\": 0"), std::string::npos);
 }
 
+TEST_F(GoldenCli, SubdivisionTracesEachTilesPixelCornersOnceAndTheStatisticsSaySo) {
+  // -a 1: cells of a whole pixel, so every pixel is the mean of its four corners and nothing
+  // splits. 40×20 pixels in 16-pixel tiles: 16, 16 and 8 wide, 16 and 4 high; each tile traces
+  // its (w + 1)(h + 1) corners, those on a tile's border again for the tile beside it.
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 40, 20));
+  const std::string json = (dir_ / "stats.json").string();
+  const RunResult r = run({"-a", "1", "--aa-method", "subdivide", "--quiet", "--stats", "--stats-json", json, scene.string()});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.err.find("  rays      " + std::to_string((17 + 17 + 9) * (17 + 5)) + " primary"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("  pixels    subdivided from their corners in the first pass (--aa-method subdivide)\n"),
+            std::string::npos) << r.err;
+  EXPECT_NE(read_file(json).find("\"antialias_method\": \"subdivide\""), std::string::npos) << read_file(json);
+}
+
 TEST_F(GoldenCli, HelpListsEveryAcceleratorOfThisBuild) {
   const RunResult r = run({"--help"});
 #ifdef MJRAY_HAVE_EMBREE

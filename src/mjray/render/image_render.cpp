@@ -202,6 +202,7 @@ RenderStats ImageRender::stats() const {
   s.threads = workers_->threads();
   s.pixels_supersampled = pixels_supersampled_;
   s.antialias_passes = antialias_passes_run_;
+  s.subdivided = settings_.subdivides();
   s.seconds = seconds_;
   return s;
 }

@@ -43,6 +43,7 @@ struct RenderStats {
   int threads = 1;
   uint64_t pixels_supersampled = 0;
   int antialias_passes = 0;
+  bool subdivided = false;  ///< --aa-method subdivide: every pixel anti-aliased in the first pass
 };
 
 /// Work done so far, in camera samples (--spp per pixel in the first pass); `total` grows as anti-aliasing passes find work.
