@@ -89,7 +89,7 @@ ProgressView ProgressEstimate::view() const {
   return v;
 }
 
-double supersample_share(const Image& snapshot, int tile_size, float threshold) {
+std::optional<double> supersample_share(const Image& snapshot, int tile_size, float threshold) {
   const int w = snapshot.width(), h = snapshot.height();
   const TileLayout layout{w, h, std::max(1, tile_size)};
   std::vector<uint8_t> finished(size_t(w) * size_t(h), 0);
@@ -107,7 +107,7 @@ double supersample_share(const Image& snapshot, int tile_size, float threshold) 
       for (int x = r.x0; x < r.x1; ++x) finished[size_t(y) * size_t(w) + size_t(x)] = 1;
     finished_pixels += size_t(r.pixel_count());
   }
-  if (finished_pixels == 0) return 0;
+  if (finished_pixels == 0) return std::nullopt;
   // Bad pixels against their finished neighbours, then the neighbours they bring along.
   std::vector<uint8_t> chosen(finished.size(), 0);
   const auto is_finished = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && finished[size_t(y) * size_t(w) + size_t(x)]; };

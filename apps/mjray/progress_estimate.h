@@ -3,6 +3,7 @@
 /// work before it is planned: estimated from the share of bad pixels, corrected as each pass
 /// is planned.
 
+#include <optional>
 #include <vector>
 
 #include "mjray/core/image.h"
@@ -59,7 +60,7 @@ class ProgressEstimate {
 /// The share of finished first-pass pixels that the first anti-aliasing pass would choose
 /// (bad pixels and their neighbours), judged within the tiles of `snapshot` that are
 /// finished: those with a pixel that is not black (ImageRender::snapshot leaves unfinished
-/// tiles black). 0 when no tile is finished.
-double supersample_share(const Image& snapshot, int tile_size, float threshold);
+/// tiles black). None when no tile is finished yet.
+std::optional<double> supersample_share(const Image& snapshot, int tile_size, float threshold);
 
 }  // namespace mjray

@@ -24,8 +24,11 @@ std::string clock_text(double seconds) {
   return buffer;
 }
 
-/// Seconds between estimates of the anti-aliasing work from the finished tiles.
+/// Seconds between estimates of the anti-aliasing work from the finished tiles, and before
+/// the first: a first pass often ends within a second, and until the estimate the
+/// anti-aliasing looks like no work at all.
 constexpr double kShareInterval = 1.0;
+constexpr double kFirstShareInterval = 0.2;
 /// Without a terminal, a line at least this often even when no tenth more is done.
 constexpr double kQuietLineInterval = 5.0;
 
@@ -64,6 +67,7 @@ void RenderWatcher::loop() {
   const auto start = Clock::now();
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto last_snapshot = start, last_report = start, last_share = start;
+  bool share_known = false;
   for (;;) {
     {
       std::unique_lock lock(wake_mutex_);
@@ -75,9 +79,11 @@ void RenderWatcher::loop() {
     // During the first pass, how much anti-aliasing the finished tiles will need.
     if (!options_.quiet && options_.render.antialias_samples > 0 && !options_.render.subdivides() &&
         render_.progress().antialias_pass == 0 &&
-        seconds_since(last_share) >= kShareInterval) {
-      estimate_.set_first_pass_share(
-          supersample_share(render_.snapshot(), options_.render.tile_size, options_.render.antialias_threshold));
+        seconds_since(last_share) >= (share_known ? kShareInterval : kFirstShareInterval)) {
+      const auto share =
+          supersample_share(render_.snapshot(), options_.render.tile_size, options_.render.antialias_threshold);
+      if (share) estimate_.set_first_pass_share(*share);
+      share_known = share.has_value();
       last_share = Clock::now();
     }
     if (seconds_since(last_report) >= (terminal_ ? 0.25 : 0.5)) {
