@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 #include "mjray/core/error.h"
 #include "mjray/render/adaptive_antialiasing.h"
@@ -50,7 +51,7 @@ ImageRender::ImageRender(const Camera& camera, int width, int height, const Inte
   total_ = uint64_t(layout_.width) * uint64_t(layout_.height) * first_pass_samples(settings);
 }
 
-Image ImageRender::windowed(const Image& image) const {
+Image ImageRender::windowed(Image image) const {
   if (!settings_.crop) return image;
   Image window(window_.x1 - window_.x0, window_.y1 - window_.y0);
   for (int y = 0; y < window.height(); ++y)
@@ -164,7 +165,7 @@ Image ImageRender::snapshot() const {
     for (int y = r.y0; y < r.y1; ++y)
       for (int x = r.x0; x < r.x1; ++x) copy.at(x, y) = film_.at(x, y).value();
   }
-  return windowed(copy);
+  return windowed(std::move(copy));
 }
 
 std::vector<uint8_t> ImageRender::finished_tiles() const {

@@ -97,8 +97,9 @@ class ImageRender {
   /// Chooses the pixels of the next anti-aliasing pass; false when there are none.
   bool plan_pass();
 
-  /// The crop window of `image` (region coordinates), or the image itself without a crop.
-  Image windowed(const Image& image) const;
+  /// The crop window of `image` (region coordinates), or the image itself without a crop
+  /// (moved, not copied: a copy of a large image is mostly page faults).
+  Image windowed(Image image) const;
 
   PixelRect region_;   // rendered_region()
   PixelRect window_;   // what image() returns, in region coordinates

@@ -32,12 +32,19 @@ uint64_t own_size(const SceneNode& node) {
   return node.shape ? 1 : 0;
 }
 
-/// The size of everything below the root, counting a node once per path to it (saturating),
+/// What the scene expands to once every instance is counted.
+struct ExpandedSize {
+  uint64_t total = 0;   ///< primitives plus the mesh vertices they copy (own_size)
+  uint64_t shapes = 0;  ///< shape instances
+};
+
+/// The expanded size below the root, counting a node once per path to it (saturating),
 /// without recursion: a node DAG can be deeper than the C++ stack and, through shared children,
 /// expand exponentially.
-uint64_t expanded_size(const SceneNode& root) {
+ExpandedSize expanded_size(const SceneNode& root) {
   constexpr uint64_t kSaturated = std::numeric_limits<uint64_t>::max();
-  std::unordered_map<const SceneNode*, uint64_t> totals;
+  const auto add = [](uint64_t a, uint64_t b) { return b > kSaturated - a ? kSaturated : a + b; };
+  std::unordered_map<const SceneNode*, ExpandedSize> totals;
   std::set<const SceneNode*> in_progress;
   std::vector<std::pair<const SceneNode*, bool>> stack{{&root, false}};
   while (!stack.empty()) {
@@ -52,10 +59,10 @@ uint64_t expanded_size(const SceneNode& root) {
         if (!totals.count(child.get())) stack.push_back({child.get(), false});
       continue;
     }
-    uint64_t total = own_size(*node);
+    ExpandedSize total{own_size(*node), node->shape && !node->mesh ? 1u : 0u};
     for (const auto& child : node->children) {
-      const uint64_t add = totals.at(child.get());
-      total = add > kSaturated - total ? kSaturated : total + add;
+      const ExpandedSize& below = totals.at(child.get());
+      total = {add(total.total, below.total), add(total.shapes, below.shapes)};
     }
     in_progress.erase(node);
     totals[node] = total;
@@ -67,21 +74,30 @@ class Flattener {
  public:
   Flattener(World& world, std::vector<std::string>* warnings) : world_(world), warnings_(warnings) {}
 
-  /// Emits the DAG below `root` in pre-order, children in order, with an explicit stack.
+  /// Emits the DAG below `root` in pre-order, children in order, with an explicit stack of
+  /// one entry per level (a node with thousands of children pushes no copies of its transform).
   void visit(const SceneNode& root) {
-    struct Pending {
+    struct Level {
       const SceneNode* node;
-      Transform world_from_parent;
+      Transform world_from_node;
+      size_t next_child = 0;
     };
-    std::vector<Pending> stack{{&root, Transform()}};
-    while (!stack.empty()) {
-      Pending next = std::move(stack.back());
-      stack.pop_back();
-      const SceneNode& node = *next.node;
-      const Transform world_from_node = next.world_from_parent * node.parent_from_node;
+    std::vector<Level> stack;
+    const auto enter = [&](const SceneNode& node, const Transform& world_from_parent) {
+      const Transform world_from_node = world_from_parent * node.parent_from_node;
       if (node.mesh || node.shape) emit(node, world_from_node);
-      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
-        stack.push_back({child->get(), world_from_node});
+      stack.push_back({&node, world_from_node});
+    };
+    enter(root, Transform());
+    while (!stack.empty()) {
+      Level& level = stack.back();
+      if (level.next_child == level.node->children.size()) {
+        stack.pop_back();
+        continue;
+      }
+      const SceneNode& child = *level.node->children[level.next_child++];
+      const Transform world_from_parent = level.world_from_node;  // `level` moves if the stack grows
+      enter(child, world_from_parent);
     }
   }
 
@@ -171,12 +187,16 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   if (!job.root) return world;
   // Compute the expanded size first, so that a small script instancing a mesh 2^60 times
   // fails at once instead of filling memory.
-  if (const uint64_t size = expanded_size(*job.root); size > max_size)
+  const ExpandedSize expanded = expanded_size(*job.root);
+  if (const uint64_t size = expanded.total; size > max_size)
     throw SceneError(job.where, "gr.render: the scene expands to " +
                                     (size == std::numeric_limits<uint64_t>::max() ? std::string("more than 10^19")
                                                                                   : std::to_string(size)) +
                                     " primitives and mesh vertices once every instance is counted, more than the "
                                     "limit of " + std::to_string(max_size));
+  // Each shape's entries are large: grown by doubling they would be copied and faulted in twice.
+  world.shapes.reserve(size_t(expanded.shapes));
+  world.primitives.shapes.reserve(size_t(expanded.shapes));
   Flattener(world, warnings).visit(*job.root);
   mark_transmissive(world);
   return world;
