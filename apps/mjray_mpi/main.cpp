@@ -20,6 +20,7 @@
 #include "rank_failed.h"
 #include "render_watcher.h"
 #include "worker.h"
+#include "mjray/core/large_page_heap.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/lua/scene_loader.h"
 
@@ -65,6 +66,7 @@ std::string all_fingerprints(const JobFingerprints& fingerprints, size_t jobs) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  back_heap_with_large_pages(size_t(256) << 20);
   std::signal(SIGXFSZ, SIG_IGN);
   MpiWorld world(argc, argv);
   const bool root = world.rank() == 0;
