@@ -47,10 +47,11 @@ std::string tiny_scene(const std::string& output = "'out.png'", int width = 8, i
 class GoldenCli : public test::ScratchFolderTest {
  protected:
 
-  /// Runs `mjray ARGS` from "/", capturing both streams into files of the run folder.
-  RunResult run(const std::vector<std::string>& args) {
+  /// Runs `mjray ARGS` from "/" (after the shell command `setup`), capturing both streams into
+  /// files of the run folder.
+  RunResult run(const std::vector<std::string>& args, const std::string& setup = "") {
     const fs::path out = logs_ / "stdout.txt", err = logs_ / "stderr.txt";
-    std::string command = "cd / && " + quoted(test::mjray_binary().string());
+    std::string command = "cd / && " + (setup.empty() ? "" : setup + " && ") + quoted(test::mjray_binary().string());
     for (const auto& arg : args) command.append(" ").append(quoted(arg));
     command += " >" + quoted(out.string()) + " 2>" + quoted(err.string()) + " </dev/null";
     const int status = std::system(command.c_str());
@@ -84,6 +85,26 @@ TEST_F(GoldenCli, GoodSceneExitsZeroAndWritesTheImageBesideTheScript) {
   EXPECT_EQ(image.width(), 8);
   EXPECT_EQ(image.height(), 6);
   EXPECT_EQ(listing(dir_), "out.png scene.lua");  // no temporary files left
+}
+
+TEST_F(GoldenCli, UnderALimitOnAddressSpaceAManySphereSceneRendersAsWithout) {
+  // Enough nodes that the heap grows: its large-page reserve must fit within the limit.
+  const std::string scene_text = "root = gr.node('root')\n"
+                                 "m = gr.material({0.8, 0.2, 0.2}, {0.5, 0.5, 0.5}, 20)\n"
+                                 "for i = 0, 4999 do\n"
+                                 "  local s = gr.nh_sphere('s' .. i, {(i % 100) * 0.1 - 5, (i // 100) * 0.1 - 2.5, -5}, 0.04)\n"
+                                 "  s:set_material(m)\n"
+                                 "  root:add_child(s)\n"
+                                 "end\n"
+                                 "gr.render(root, 'out.png', 32, 24, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2},\n"
+                                 "          {gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n";
+  const auto scene = write("scene.lua", scene_text);
+  const RunResult plain = run({"--quiet", "--output", (dir_ / "plain.png").string(), scene.string()});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const RunResult limited = run({"--quiet", scene.string()}, "ulimit -v 200000");
+  EXPECT_EQ(limited.exit_code, 0) << limited.err;
+  EXPECT_EQ(limited.err, "");
+  EXPECT_EQ(read_file(dir_ / "out.png"), read_file(dir_ / "plain.png"));
 }
 
 TEST_F(GoldenCli, SceneErrorExitsOneNamingTheScriptLine) {

@@ -9,9 +9,10 @@
 
 namespace mjray {
 
-/// Extends the heap by `bytes` at once and advises 2 MiB pages for it; allocations below 32
-/// MiB come from the heap from then on. Call once, first thing in main(), before any thread
-/// starts. Does nothing where the system or the C library offers no such advice.
+/// Extends the heap by `bytes` at once (at most an eighth of a limit on address space) and
+/// advises 2 MiB pages for it; allocations below 32 MiB come from the heap from then on. Call
+/// once, first thing in main(), before any thread starts. Does nothing where the system or
+/// the C library offers no such advice.
 void back_heap_with_large_pages(size_t bytes);
 
 }  // namespace mjray
