@@ -18,6 +18,7 @@ namespace mjray {
 
 void back_heap_with_large_pages(size_t bytes) {
 #if defined(__linux__) && defined(__GLIBC__) && defined(MADV_HUGEPAGE)
+  if (kSanitizerAllocator) return;
   constexpr size_t kMmapThreshold = size_t(32) << 20;  // glibc's own ceiling for the dynamic one
   constexpr int kDefaultTopPad = 128 << 10;             // glibc's default
   // Under a limit on address space (ulimit -v) take only a small part of it.

@@ -9,10 +9,24 @@
 
 namespace mjray {
 
+/// Whether this build replaces the C library's allocator with AddressSanitizer's, which
+/// serves no block from the heap that the advice covers.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitizerAllocator = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kSanitizerAllocator = true;
+#else
+constexpr bool kSanitizerAllocator = false;
+#endif
+#else
+constexpr bool kSanitizerAllocator = false;
+#endif
+
 /// Extends the heap by `bytes` at once (at most an eighth of a limit on address space) and
 /// advises 2 MiB pages for it; allocations below 32 MiB come from the heap from then on. Call
 /// once, first thing in main(), before any thread starts. Does nothing where the system or
-/// the C library offers no such advice.
+/// the C library offers no such advice, and under AddressSanitizer.
 void back_heap_with_large_pages(size_t bytes);
 
 }  // namespace mjray

@@ -51,6 +51,7 @@ bool transparent_huge_pages_available() {
 }
 
 TEST(LargePageHeap, BlocksUnder32MiBComeFromTheHeapAdvisedForLargePages) {
+  if (kSanitizerAllocator) GTEST_SKIP() << "AddressSanitizer's allocator replaces the heap";
   if (!transparent_huge_pages_available()) GTEST_SKIP() << "this system has no transparent huge pages";
   back_heap_with_large_pages(size_t(64) << 20);
   // An 8 MiB block would be mapped on its own, on small pages, by default (above 128 KiB).
