@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <unordered_map>
+#include <utility>
 
 namespace mjray {
 
@@ -83,12 +84,11 @@ class Flattener {
       size_t next_child = 0;
     };
     std::vector<Level> stack;
-    const auto enter = [&](const SceneNode& node, const Transform& world_from_parent) {
-      const Transform world_from_node = world_from_parent * node.parent_from_node;
+    const auto enter = [&](const SceneNode& node, Transform world_from_node) {
       if (node.mesh || node.shape) emit(node, world_from_node);
-      stack.push_back({&node, world_from_node});
+      stack.push_back({&node, std::move(world_from_node)});
     };
-    enter(root, Transform());
+    enter(root, Transform() * root.parent_from_node);
     while (!stack.empty()) {
       Level& level = stack.back();
       if (level.next_child == level.node->children.size()) {
@@ -96,8 +96,7 @@ class Flattener {
         continue;
       }
       const SceneNode& child = *level.node->children[level.next_child++];
-      const Transform world_from_parent = level.world_from_node;  // `level` moves if the stack grows
-      enter(child, world_from_parent);
+      enter(child, level.world_from_node * child.parent_from_node);  // computed before the stack grows
     }
   }
 
