@@ -32,6 +32,7 @@
 #ifdef MJRAY_HAVE_EMBREE
 #include "mjray/accel/embree_bvh_builder.h"
 #endif
+#include "mjray/core/large_page_heap.h"
 #include "mjray/core/rng.h"
 #include "mjray/geometry/spawn_ray.h"
 #include "mjray/io/obj_loader.h"
@@ -292,6 +293,8 @@ std::string json_escape(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The heap on large pages, as the renderer has it (core/large_page_heap.h).
+  back_heap_with_large_pages(size_t(256) << 20);
   const Options o = parse(argc, argv);
   try {
     // Load the mesh.

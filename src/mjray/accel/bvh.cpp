@@ -1,9 +1,11 @@
 #include "mjray/accel/bvh.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -42,6 +44,8 @@ constexpr float kGamma3 = 3 * std::numeric_limits<float>::epsilon() * 0.5f /
                           (1 - 3 * std::numeric_limits<float>::epsilon() * 0.5f);
 constexpr float kFarScale = 1 + 2 * kGamma3;
 
+constexpr size_t round_up(size_t n, size_t multiple) { return (n + multiple - 1) / multiple * multiple; }
+
 bool is_valid_ray(const Ray& ray, Interval t_range) {
   return is_finite(ray.origin) && is_finite(ray.direction) && t_range.max > t_range.min;
 }
@@ -53,15 +57,28 @@ struct StackEntry {
   float t_enter;
 };
 
+/// The node at `place` of a layout. Its bytes hold a node written there by memcpy.
+const BvhWideNode& node_in(const std::byte* layout, uint32_t place) {
+  return *reinterpret_cast<const BvhWideNode*>(layout + size_t(place) * BvhLayout::kPlaceBytes);
+}
+
+/// The bytes a node takes in a layout, with its leaves' runs.
+size_t bytes_with_runs(const BvhWideNode& node) {
+  size_t bytes = sizeof(BvhWideNode);
+  for (size_t c = 0; c < size_t(kBvhWidth); ++c)
+    if (node.is_leaf(c)) bytes += node.count(c) * LeafRun::kBytesPerPrimitive;
+  return bytes;
+}
+
 /// What traversal reads of a Bvh.
 struct TraversalView {
-  const BvhWideNode* nodes;
-  const float* leaf_data;  // the LeafRuns
+  const std::byte* layout;  // BvhLayout
   const PrimitiveSet* prims;
   uint32_t triangle_count;
   bool only_triangles;  // no shapes: a leaf's entries need no check of their kind
 
-  LeafRun leaf(uint32_t word) const { return LeafRun::of(leaf_data, word); }
+  const BvhWideNode& node(uint32_t place) const { return node_in(layout, place); }
+  LeafRun leaf(uint32_t word) const { return LeafRun::of(layout, word); }
 };
 
 namespace baseline {
@@ -98,7 +115,11 @@ BvhTree built_tree(const PrimitiveSet& prims, int threads) {
   static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
   BvhBuildResult built = build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
                                    {.threads = threads, .shapes_from = uint32_t(prims.triangles.size())});
-  BvhTree tree{collapse_to_wide(built.nodes), std::move(built.order), {}};
+  // Room for the layout in the wide nodes' own array: a binary tree of n nodes has n / 2 inner
+  // ones, each the root of at most one wide node, and a leaf root takes one more.
+  const size_t layout_room = BvhLayout::bytes_bound(built.nodes.size() / 2 + 1, built.order.size());
+  BvhTree tree{collapse_to_wide(built.nodes, (layout_room + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode)),
+               std::move(built.order), {}};
   if (!built.nodes.empty()) {
     const BvhNode& root = built.nodes.front();
     tree.bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
@@ -114,24 +135,79 @@ Bvh::Bvh(const PrimitiveSet& prims, BvhTree tree, int threads, BvhSimd simd)
     : prims_(prims),
       triangle_count_(uint32_t(prims.triangles.size())),
       use_avx_(simd == BvhSimd::kBest && cpu_has_avx()),
-      nodes_(std::move(tree.nodes)),
+      node_count_(tree.nodes.size()),
       bounds_(tree.bounds) {
-  // Copy the triangles into leaf order, in chunks of nodes on all the build's threads.
-  leaf_data_.assign(tree.order.size() * LeafRun::kLeafFloats + LeafRun::kLeafPadding, 0.f);
+  if (tree.nodes.empty()) return;
+  // Compute each node's place: in the tree's order, each node followed by its leaves' runs.
+  std::vector<uint32_t> place(tree.nodes.size() + 1);
+  size_t bytes = 0;
+  for (size_t n = 0; n < tree.nodes.size(); ++n) {
+    place[n] = uint32_t(bytes / BvhLayout::kPlaceBytes);
+    const BvhWideNode& node = tree.nodes[n];
+    bytes = round_up(bytes + bytes_with_runs(node), BvhLayout::kNodeAlignment);
+    for (size_t c = 0; c < size_t(kBvhWidth); ++c) leaf_primitive_count_ += node.is_leaf(c) ? node.count(c) : 0;
+    if (bytes > BvhLayout::kMaxBytes)
+      throw std::length_error("the BVH holds at most " + std::to_string(BvhLayout::kMaxBytes >> 30) +
+                              " GiB of nodes and triangles; use --accel embree for this scene");
+  }
+  place.back() = uint32_t(bytes / BvhLayout::kPlaceBytes);
+  layout_bytes_ = bytes + BvhLayout::kPadding;
+
+  // Move the nodes to their places, last first: a node's place is never before its index in
+  // the array, so each lands where only nodes already moved were. The array grows in place
+  // where its producer reserved room for the layout (built_tree does).
+  layout_ = std::move(tree.nodes);
+  layout_.resize((layout_bytes_ + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode));
+  std::byte* layout = layout_bytes();
+  for (size_t n = node_count_; n-- > 0;) {
+    const BvhWideNode node = layout_[n];
+    std::memcpy(layout + size_t(place[n]) * BvhLayout::kPlaceBytes, &node, sizeof node);
+  }
+
+  // Write each node's runs after it and turn its child words into places, in chunks of nodes
+  // on all the build's threads.
   constexpr int kChunks = 64;
   parallel_for(kChunks, resolve_thread_count(threads), [&](int chunk, int) {
-    for (auto [n, end] = chunk_range(nodes_.size(), chunk, kChunks); n < end; ++n) {
-      const BvhWideNode& node = nodes_[n];
-      for (size_t c = 0; c < size_t(kBvhWidth); ++c)
-        if (node.is_leaf(c)) write_leaf_run(node.first(c), node.count(c), tree.order);
+    for (auto [n, end] = chunk_range(node_count_, chunk, kChunks); n < end; ++n) {
+      std::byte* at_node = layout + size_t(place[n]) * BvhLayout::kPlaceBytes;
+      BvhWideNode node;
+      std::memcpy(&node, at_node, sizeof node);
+      size_t at = size_t(place[n]) * BvhLayout::kPlaceBytes + sizeof(BvhWideNode);
+      for (size_t c = 0; c < size_t(kBvhWidth); ++c) {
+        if (node.is_leaf(c)) {
+          write_leaf_run(at, node.first(c), node.count(c), tree.order);
+          node.child[c] = BvhWideNode::leaf_word(uint32_t(at / BvhLayout::kPlaceBytes), node.count(c));
+          at += node.count(c) * LeafRun::kBytesPerPrimitive;
+        } else {
+          // A tree from elsewhere must name only its own nodes.
+          MJRAY_CHECK(node.child[c] < node_count_);
+          node.child[c] = place[node.child[c]];
+        }
+      }
+      std::memcpy(at_node, &node, sizeof node);
+      // Clear what the move left between the runs and the next node (or the end).
+      const size_t next = n + 1 < node_count_ ? size_t(place[n + 1]) * BvhLayout::kPlaceBytes : layout_.size() * sizeof(BvhWideNode);
+      std::memset(layout + at, 0, next - at);
     }
   });
 }
 
-void Bvh::write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_t> order) {
+const BvhWideNode& Bvh::node_at(uint32_t place) const { return node_in(layout_bytes(), place); }
+
+template <class F>
+void Bvh::for_each_node(F&& f) const {
+  size_t at = 0;
+  for (size_t n = 0; n < node_count_; ++n) {
+    const BvhWideNode& node = node_at(uint32_t(at / BvhLayout::kPlaceBytes));
+    f(node);
+    at = round_up(at + bytes_with_runs(node), BvhLayout::kNodeAlignment);
+  }
+}
+
+void Bvh::write_leaf_run(size_t at, uint32_t first, uint32_t count, std::span<const uint32_t> order) {
   // A tree from elsewhere must name only its own order's entries and the set's primitives.
   MJRAY_CHECK(size_t(first) + count <= order.size());
-  float* run = leaf_data_.data() + size_t(first) * LeafRun::kLeafFloats;
+  std::array<float, LeafRun::kLeafFloats << BvhWideNode::kCountBits> run{};
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t prim = order[first + i];
     MJRAY_CHECK(prim < prims_.size());
@@ -141,33 +217,33 @@ void Bvh::write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_
     for (uint32_t k = 0; k < 3; ++k)
       for (uint32_t axis = 0; axis < 3; ++axis) run[(3 * k + axis) * count + i] = v[k][int(axis)];
   }
+  std::memcpy(layout_bytes() + at, run.data(), count * LeafRun::kBytesPerPrimitive);
 }
 
 double Bvh::sah_cost(double node_cost, double primitive_cost) const {
-  if (nodes_.empty()) return 0;
+  if (node_count_ == 0) return 0;
   const auto area = [](float dx, float dy, float dz) { return double(dx) * dy + double(dy) * dz + double(dz) * dx; };
   const Vector3 d = bounds_.diagonal();
   const double root = area(d.x, d.y, d.z);
   if (!(root > 0)) return node_cost;
   double cost = node_cost;
-  for (const BvhWideNode& node : nodes_)
+  for_each_node([&](const BvhWideNode& node) {
     for (size_t i = 0; i < size_t(kBvhWidth); ++i) {
       const auto& b = node.bounds;
       if (b[0][i] > b[3][i]) continue;  // an unused slot
       const double share = area(b[3][i] - b[0][i], b[4][i] - b[1][i], b[5][i] - b[2][i]) / root;
       cost += share * (node.is_leaf(i) ? primitive_cost * node.count(i) : node_cost);
     }
+  });
   return cost;
 }
 
-size_t Bvh::memory_bytes() const {
-  return nodes_.size() * sizeof(BvhWideNode) + leaf_data_.size() * sizeof(float);
-}
+size_t Bvh::memory_bytes() const { return layout_bytes_; }
 
 template <BvhQuery kQuery>
 bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
-  if (nodes_.empty() || !is_valid_ray(ray, t_range)) return false;
-  const TraversalView view{nodes_.data(), leaf_data_.data(), &prims_, triangle_count_, prims_.shapes.empty()};
+  if (node_count_ == 0 || !is_valid_ray(ray, t_range)) return false;
+  const TraversalView view{layout_bytes(), &prims_, triangle_count_, prims_.shapes.empty()};
   constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {
@@ -191,7 +267,7 @@ bool Bvh::occluded(const Ray& ray, float t_max) const {
 
 std::optional<size_t> Bvh::region_primitives(const LightPyramid& region, uint32_t ignore,
                                              std::span<uint32_t> out) const {
-  if (nodes_.empty()) return 0;
+  if (node_count_ == 0) return 0;
   // Past this many nodes the search is not worth its cost: the rays are traced instead.
   constexpr int kNodeBudget = 48;
   uint32_t stack[kStackSize];
@@ -200,7 +276,7 @@ std::optional<size_t> Bvh::region_primitives(const LightPyramid& region, uint32_
   stack[top++] = 0;
   while (top > 0) {
     if (++visited > kNodeBudget) return std::nullopt;
-    const BvhWideNode& node = nodes_[stack[--top]];
+    const BvhWideNode& node = node_at(stack[--top]);
     // Unused slots have empty boxes, which are outside.
     for (unsigned touching = ~region.outside(node.bounds) & 0xffu; touching != 0; touching &= touching - 1) {
       const size_t i = size_t(std::countr_zero(touching));
@@ -209,7 +285,7 @@ std::optional<size_t> Bvh::region_primitives(const LightPyramid& region, uint32_
         continue;
       }
       // A leaf: each primitive not surely outside is a candidate.
-      const LeafRun run = LeafRun::of(leaf_data_.data(), node.child[i]);
+      const LeafRun run = LeafRun::of(layout_bytes(), node.child[i]);
       for (uint32_t k = 0; k < run.count; ++k) {
         const uint32_t prim = run.prim(k);
         if (prim == ignore) continue;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -22,17 +23,20 @@ constexpr int kBvhWidth = 8;
 /// that SIMD slab tests cover several children at once. A child is an inner node or a leaf:
 /// a LeafRun. Unused slots have empty bounds, which every ray misses. 224 bytes:
 /// a leaf's run is packed into its child word, so a node is its boxes and eight words.
+/// In a BvhTree a child word names an index into its nodes, or a leaf's range of its order;
+/// in a Bvh's layout it names a place (BvhLayout), a node's or a run's.
 struct alignas(32) BvhWideNode {
   /// Leaf words have the top bit set (so one SIMD movemask finds a node's leaves), then the
-  /// run's first primitive (in leaf order), then the count in the low bits.
+  /// run's first primitive (in a BvhTree's order) or its place (in a layout), then the count
+  /// in the low bits.
   static constexpr uint32_t kLeafFlag = 0x80000000u;
   static constexpr int kCountBits = 3;
-  /// The most primitives a BVH can index.
+  /// The most primitives a BvhTree can index, and the most places a leaf word can name.
   static constexpr uint32_t kMaxLeafPrimitives = kLeafFlag >> kCountBits;
 
   /// bounds[k][i]: k = 0..2 lower x, y, z; k = 3..5 upper x, y, z of child i (world space).
   std::array<std::array<float, kBvhWidth>, 6> bounds;
-  /// Child i: an inner node's index, or a leaf (leaf_word); 0 in unused slots.
+  /// Child i: an inner node (its index or place), or a leaf (leaf_word); 0 in unused slots.
   std::array<uint32_t, kBvhWidth> child;
 
   /// A node with no children yet: every slot's box is empty, which every ray misses.
@@ -66,22 +70,45 @@ static_assert(sizeof(BvhWideNode) == 224);
 /// Wide nodes as the BVH keeps them: on large pages, which rays read at random.
 using BvhWideNodes = std::vector<BvhWideNode, LargePageAllocator<BvhWideNode>>;
 
+/// Where a Bvh keeps its tree: each wide node (aligned to 32 bytes) followed by the LeafRuns
+/// of its leaf children, node after node in the tree's depth-first order, the root first. A ray
+/// that enters a node mostly tests its leaves next, and finds them on the same page and in
+/// the lines after the node, which the processor's prefetchers bring in with it. Child words
+/// in the layout name places: offsets in units of kPlaceBytes.
+struct BvhLayout {
+  static constexpr size_t kPlaceBytes = 8;  ///< a LeafRun is a multiple of 8 bytes long
+  static constexpr size_t kNodeAlignment = 32;
+  /// Bytes after the last run, so that a row's load may read past its end.
+  static constexpr size_t kPadding = 16;
+  /// The most bytes a layout can hold: its leaf words name places below kMaxLeafPrimitives.
+  static constexpr size_t kMaxBytes = size_t(BvhWideNode::kMaxLeafPrimitives) * kPlaceBytes;
+
+  /// The most bytes the layout of at most `nodes` wide nodes over `primitives` leaf entries takes.
+  static constexpr size_t bytes_bound(size_t nodes, size_t primitives) {
+    return nodes * (sizeof(BvhWideNode) + kNodeAlignment - kPlaceBytes) + primitives * 10 * sizeof(float) + kPadding;
+  }
+};
+static_assert(alignof(BvhWideNode) == BvhLayout::kNodeAlignment && sizeof(BvhWideNode) % BvhLayout::kNodeAlignment == 0);
+
 /// A leaf's run of primitives as the BVH stores it: kLeafFloats floats per primitive, in rows
 /// of `count` (p0.x of each primitive, then p0.y, … p2.z, then the primitive ids), so that one
 /// unaligned SIMD load gives a coordinate of up to four triangles with no transposing. Shapes
-/// store zero corners. Runs lie end to end in leaf order; the array has kLeafPadding floats
-/// more so that a row's load may read past the last run.
+/// store zero corners. A row's load may read up to three floats past the run.
 struct LeafRun {
   static constexpr uint32_t kLeafFloats = 10;  ///< nine corner coordinates and the id
   static constexpr uint32_t kIdRow = 9;
-  static constexpr size_t kLeafPadding = 3;
+  static constexpr size_t kBytesPerPrimitive = kLeafFloats * sizeof(float);
+  static_assert(kBytesPerPrimitive % BvhLayout::kPlaceBytes == 0);
+  static_assert(BvhLayout::bytes_bound(0, 1) == kBytesPerPrimitive + BvhLayout::kPadding);
 
   const float* data;  ///< the run's first float
   uint32_t count;     ///< primitives in the run
 
-  /// The run a leaf's child word (BvhWideNode::leaf_word) names in the BVH's leaf data.
-  static LeafRun of(const float* leaf_data, uint32_t word) {
-    return {leaf_data + size_t(BvhWideNode::first_of(word)) * kLeafFloats, BvhWideNode::count_of(word)};
+  /// The run a leaf's child word (BvhWideNode::leaf_word) names in a BvhLayout.
+  static LeafRun of(const std::byte* layout, uint32_t word) {
+    // The layout's bytes hold floats written there by memcpy.
+    return {reinterpret_cast<const float*>(layout + size_t(BvhWideNode::first_of(word)) * BvhLayout::kPlaceBytes),
+            BvhWideNode::count_of(word)};
   }
 
   /// Row `row` (coordinate 3·corner + axis, or kIdRow): `count` floats.
@@ -135,12 +162,12 @@ class Bvh final : public Accelerator {
   std::string_view name() const override { return "bvh"; }
   size_t memory_bytes() const override;
 
-  /// The nodes, root first (none for an empty world); exposed for tests and statistics.
-  std::span<const BvhWideNode> nodes() const { return nodes_; }
-  /// The leaves' runs end to end (LeafRun), without the padding; exposed for tests.
-  std::span<const float> leaf_data() const { return {leaf_data_.data(), leaf_data_.size() - LeafRun::kLeafPadding}; }
+  /// The number of wide nodes (none for an empty world).
+  size_t node_count() const { return node_count_; }
+  /// The nodes and runs as traversal reads them (BvhLayout); exposed for tests.
+  std::span<const std::byte> layout() const { return {layout_bytes(), layout_bytes_}; }
   /// The number of primitives in the leaves.
-  size_t leaf_primitive_count() const { return (leaf_data_.size() - LeafRun::kLeafPadding) / LeafRun::kLeafFloats; }
+  size_t leaf_primitive_count() const { return leaf_primitive_count_; }
   /// The surface area heuristic's estimate of a ray's cost through the tree: `node_cost` per
   /// node box entered and `primitive_cost` per primitive of a leaf box entered, each weighted
   /// by the box's area over the root's (the root's own visit counts one node_cost).
@@ -149,16 +176,27 @@ class Bvh final : public Accelerator {
   bool uses_avx() const { return use_avx_; }
 
  private:
-  /// Writes the LeafRun of order[first, first + count).
-  void write_leaf_run(uint32_t first, uint32_t count, std::span<const uint32_t> order);
+  const std::byte* layout_bytes() const { return reinterpret_cast<const std::byte*>(layout_.data()); }
+  /// The node at `place` in the layout.
+  const BvhWideNode& node_at(uint32_t place) const;
+  /// Calls f(node) for every node, in the layout's order.
+  template <class F>
+  void for_each_node(F&& f) const;
+  /// Writes the LeafRun of order[first, first + count) at byte `at` of the layout.
+  void write_leaf_run(size_t at, uint32_t first, uint32_t count, std::span<const uint32_t> order);
+  std::byte* layout_bytes() { return reinterpret_cast<std::byte*>(layout_.data()); }
   template <BvhQuery kQuery>
   bool trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const;
 
   const PrimitiveSet& prims_;
   uint32_t triangle_count_ = 0;
   bool use_avx_ = false;
-  BvhWideNodes nodes_;
-  std::vector<float, LargePageAllocator<float>> leaf_data_;  // LeafRuns, then kLeafPadding floats
+  /// The BvhLayout, stored in the tree's own node array (grown, and read as bytes), so that
+  /// laying the tree out needs no second copy of its nodes.
+  BvhWideNodes layout_;
+  size_t layout_bytes_ = 0;
+  size_t node_count_ = 0;
+  size_t leaf_primitive_count_ = 0;
   Bounds3 bounds_;
 };
 

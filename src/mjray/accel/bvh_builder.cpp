@@ -538,10 +538,10 @@ class Collapser {
 
 }  // namespace
 
-BvhWideNodes collapse_to_wide(const BvhNodes& binary) {
+BvhWideNodes collapse_to_wide(const BvhNodes& binary, size_t capacity) {
   BvhWideNodes wide;
   if (binary.empty()) return wide;
-  wide.reserve(binary.size() / (kBvhWidth - 1) + 1);
+  wide.reserve(std::max(capacity, binary.size() / (kBvhWidth - 1) + 1));
   Collapser(binary).collapse(0, wide);
   return wide;
 }

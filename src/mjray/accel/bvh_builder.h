@@ -58,7 +58,8 @@ BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>&
                          const BvhBuildOptions& options);
 
 /// Collapses a binary hierarchy into kBvhWidth-wide nodes (root first) by repeatedly opening
-/// the inner child with the largest surface area; leaves keep their `order` ranges.
-BvhWideNodes collapse_to_wide(const BvhNodes& binary);
+/// the inner child with the largest surface area; leaves keep their `order` ranges. The array
+/// has room for at least `capacity` nodes.
+BvhWideNodes collapse_to_wide(const BvhNodes& binary, size_t capacity = 0);
 
 }  // namespace mjray

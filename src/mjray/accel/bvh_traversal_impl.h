@@ -205,7 +205,7 @@ inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const 
 /// cache before it is needed.
 inline void prefetch(const TraversalView& bvh, const StackEntry& e) {
   if ((e.child & BvhWideNode::kLeafFlag) == 0) {
-    const char* p = reinterpret_cast<const char*>(bvh.nodes + e.child);
+    const char* p = reinterpret_cast<const char*>(&bvh.node(e.child));
     for (size_t at = 0; at < sizeof(BvhWideNode); at += 64) __builtin_prefetch(p + at);
   } else {
     const LeafRun run = bvh.leaf(e.child);
@@ -230,7 +230,7 @@ bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* h
   StackEntry current{0, 0};
   for (;;) {
     if ((current.child & BvhWideNode::kLeafFlag) == 0) {
-      const BvhWideNode& node = bvh.nodes[current.child];
+      const BvhWideNode& node = bvh.node(current.child);
       std::array<float, kBvhWidth> t_enter;
       unsigned mask = hit_children(node, box_ray, t_enter);
       if (mask != 0) {
@@ -312,10 +312,10 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
   const float t_min = t_range.min, t_max = t_range.max;
   uint32_t stack[kStackSize];
   int top = 0;
-  uint32_t node_index = 0;
+  uint32_t node_index = 0;  // the root's place
   std::array<float, kBvhWidth> t_enter;
   for (;;) {
-    const BvhWideNode& node = bvh.nodes[node_index];
+    const BvhWideNode& node = bvh.node(node_index);
     const unsigned mask = hit_children(node, box_ray, t_enter);
     const unsigned leaves = leaf_children(node);
     // Compute the leaves' primitives first.

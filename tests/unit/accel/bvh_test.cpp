@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstring>
 #include <algorithm>
+#include <bit>
+#include <span>
 #include <initializer_list>
 #include <limits>
 #include <random>
@@ -251,12 +253,9 @@ TEST(BvhBuild, ParallelBuildEqualsSerialBuild) {
   const Bvh serial(world, 1);
   for (int threads : {2, 3, 8}) {
     const Bvh parallel(world, threads);
-    ASSERT_EQ(serial.nodes().size(), parallel.nodes().size()) << threads;
-    EXPECT_EQ(std::memcmp(serial.nodes().data(), parallel.nodes().data(),
-                          serial.nodes().size() * sizeof(BvhWideNode)), 0) << threads;
-    ASSERT_EQ(serial.leaf_data().size(), parallel.leaf_data().size()) << threads;
-    EXPECT_EQ(std::memcmp(serial.leaf_data().data(), parallel.leaf_data().data(), serial.leaf_data().size_bytes()), 0)
-        << threads;
+    EXPECT_EQ(serial.node_count(), parallel.node_count()) << threads;
+    ASSERT_EQ(serial.layout().size(), parallel.layout().size()) << threads;
+    EXPECT_EQ(std::memcmp(serial.layout().data(), parallel.layout().data(), serial.layout().size()), 0) << threads;
   }
 }
 
@@ -301,6 +300,72 @@ TEST(BvhBuild, ShapesCostlierThanTrianglesGetSmallerLeaves) {
   for (const Bounds3& b : boxes) mixed.push_back({b.lo + Vector3(100, 0, 0), b.hi + Vector3(100, 0, 0)});
   const BvhBuildResult both = build_bvh(mixed, {.threads = 1, .shapes_from = n});
   EXPECT_LT(mean_leaf_size(both, n, 2 * n), mean_leaf_size(both, 0, n));
+}
+
+// Random small triangles and a few shapes: a tree several levels deep with leaves of all sizes.
+PrimitiveSet scattered_world(int triangles, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0, 1);
+  std::vector<Point3> positions;
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 0; i < triangles; ++i) {
+    const Point3 p{unit(rng) * 10, unit(rng) * 10, unit(rng) * 10};
+    const int base = int(positions.size());
+    positions.insert(positions.end(), {p, p + Vector3(unit(rng), 0, unit(rng)), p + Vector3(0, unit(rng), unit(rng))});
+    faces.push_back({base, base + 1, base + 2});
+  }
+  PrimitiveSet world = mesh_world(positions, faces);
+  add_shapes(world, 12, seed + 1);
+  return world;
+}
+
+TEST(BvhLayout, EachNodeIsFollowedByItsLeavesRunsInDepthFirstOrder) {
+  const PrimitiveSet world = scattered_world(3000, 43);
+  const Bvh bvh(world, 2);
+  ASSERT_GT(bvh.node_count(), 20u);
+  const std::span<const std::byte> layout = bvh.layout();
+  std::vector<size_t> node_starts;
+  std::vector<uint32_t> inner_children;
+  std::vector<int> seen(world.size(), 0);
+  size_t at = 0;
+  for (size_t n = 0; n < bvh.node_count(); ++n) {
+    // A node starts on a 32-byte boundary, right after the previous node's runs.
+    ASSERT_EQ(at % BvhLayout::kNodeAlignment, 0u);
+    node_starts.push_back(at);
+    BvhWideNode node;
+    std::memcpy(&node, layout.data() + at, sizeof node);
+    at += sizeof node;
+    for (size_t c = 0; c < size_t(kBvhWidth); ++c) {
+      if (!node.is_leaf(c)) {
+        if (node.bounds[0][c] <= node.bounds[3][c]) inner_children.push_back(node.child[c]);
+        continue;
+      }
+      // Its leaves' runs follow it, in slot order, end to end.
+      ASSERT_EQ(size_t(node.first(c)) * BvhLayout::kPlaceBytes, at) << "node " << n << " slot " << c;
+      const LeafRun run = LeafRun::of(layout.data(), node.child[c]);
+      for (uint32_t i = 0; i < run.count; ++i) {
+        const uint32_t prim = run.prim(i);
+        ASSERT_LT(prim, world.size());
+        ++seen[prim];
+        if (!world.is_triangle(prim)) continue;
+        const auto v = world.triangle_vertices(prim);
+        for (uint32_t k = 0; k < 3; ++k) EXPECT_EQ(std::bit_cast<Point3>(run.corner(k, i)), v[k]);
+      }
+      at += run.count * LeafRun::kBytesPerPrimitive;
+    }
+    at = (at + BvhLayout::kNodeAlignment - 1) / BvhLayout::kNodeAlignment * BvhLayout::kNodeAlignment;
+  }
+  EXPECT_EQ(at + BvhLayout::kPadding, layout.size());
+  EXPECT_EQ(bvh.memory_bytes(), layout.size());
+  // Every primitive is in exactly one leaf, and every inner child names a node's start that
+  // comes after its parent's (depth first: the root is first, and a child follows its parent).
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int count) { return count == 1; }));
+  for (uint32_t child : inner_children) {
+    const size_t place = size_t(child) * BvhLayout::kPlaceBytes;
+    EXPECT_TRUE(std::binary_search(node_starts.begin(), node_starts.end(), place)) << place;
+    EXPECT_GT(place, 0u);
+  }
+  EXPECT_EQ(inner_children.size(), bvh.node_count() - 1);
 }
 
 TEST(BvhBuild, MemoryStaysWithinBudgetPerTriangle) {
@@ -378,11 +443,26 @@ TEST(BvhPrebuiltTree, IsTraversedAsGiven) {
   }
 }
 
+TEST(BvhLayout, ATreeFromElsewhereIsLaidOutAlike) {
+  // The hand-made tree's array has no room reserved for the layout: it grows by a copy.
+  const PrimitiveSet world = mesh_world({{0, 0, 0.5f}, {1, 0, 0.5f}, {0, 1, 0.5f}, {2, 0, 0.5f}, {1, 1, 0.5f}},
+                                        {{0, 1, 2}, {1, 3, 4}});
+  const Bvh bvh(world, two_leaf_tree(), 1);
+  BvhWideNode root;
+  std::memcpy(&root, bvh.layout().data(), sizeof root);
+  EXPECT_EQ(root.child[0], BvhWideNode::leaf_word(sizeof(BvhWideNode) / BvhLayout::kPlaceBytes, 1));
+  EXPECT_EQ(root.child[1],
+            BvhWideNode::leaf_word((sizeof(BvhWideNode) + LeafRun::kBytesPerPrimitive) / BvhLayout::kPlaceBytes, 1));
+  // 224 + 80 bytes, rounded up to 32, then the padding.
+  EXPECT_EQ(bvh.layout().size(), 320 + BvhLayout::kPadding);
+}
+
 TEST(BvhEdgeCases, EmptyWorldHasNoHitsAndEmptyBounds) {
   const PrimitiveSet world;
   const Bvh bvh(world, 0);
   EXPECT_TRUE(bvh.bounds().empty());
-  EXPECT_TRUE(bvh.nodes().empty());
+  EXPECT_EQ(bvh.node_count(), 0u);
+  EXPECT_TRUE(bvh.layout().empty());
   EXPECT_FALSE(bvh.intersect({{0, 0, 0}, {0, 0, 1}}, {}).has_value());
   EXPECT_FALSE(bvh.occluded({{0, 0, 0}, {0, 0, 1}}, kInfinity));
 }
