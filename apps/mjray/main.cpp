@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli.h"
+#include "mjray/core/error.h"
 #include "mjray/core/large_page_heap.h"
 #include "job_statistics.h"
 #include "local_render.h"
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
     try {
       return run_watch_session(cl);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "mjray: error: %s\n", e.what());
+      std::fprintf(stderr, "mjray: error: %s\n", error_message(e).c_str());
       return 1;
     }
   }
@@ -117,7 +118,7 @@ int main(int argc, char** argv) {
   } catch (const Interrupted&) {
     return 130;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "mjray: error: %s\n", e.what());
+    std::fprintf(stderr, "mjray: error: %s\n", error_message(e).c_str());
     return 1;
   }
   return 0;

@@ -8,6 +8,8 @@
 
 #include <unistd.h>
 
+#include "mjray/core/error.h"
+
 namespace mjray {
 
 namespace {
@@ -95,7 +97,7 @@ void RenderWatcher::loop() {
       try {
         write_image(render_.snapshot(), image_path_, options_.encoding);
       } catch (const std::exception& e) {
-        std::fprintf(stderr, "%smjray: warning: %s\n", terminal_ && !options_.quiet ? "\n" : "", e.what());
+        std::fprintf(stderr, "%smjray: warning: %s\n", terminal_ && !options_.quiet ? "\n" : "", error_message(e).c_str());
       }
       last_snapshot = Clock::now();
     }

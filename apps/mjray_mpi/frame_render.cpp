@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "local_render.h"
+#include "mjray/core/error.h"
 #include "mjray/job/prepared_job.h"
 #include "mjray/render/tile_layout.h"
 
@@ -61,7 +62,7 @@ FrameOutcome FrameRender::run(const SceneDescription& scene, size_t index, const
     stats.ranks = {r};
     done.stats = std::move(stats);
   } catch (const std::exception& e) {
-    outcome.error = e.what();
+    outcome.error = error_message(e);
   }
   return outcome;
 }

@@ -20,6 +20,7 @@
 #include "rank_failed.h"
 #include "render_watcher.h"
 #include "worker.h"
+#include "mjray/core/error.h"
 #include "mjray/core/large_page_heap.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/lua/scene_loader.h"
@@ -99,7 +100,7 @@ int main(int argc, char** argv) {
   try {
     scene = load_scene(cl.scene, cl.load);
   } catch (const std::exception& e) {
-    load_error = e.what();
+    load_error = error_message(e);
   }
   const double load_seconds = seconds_since(start);
   std::vector<RankStatistics> ranks;
@@ -140,7 +141,7 @@ int main(int argc, char** argv) {
     end_run(world);
     return 1;
   } catch (const std::exception& e) {
-    print_error(e.what());
+    print_error(error_message(e));
     end_run(world);
     return 1;
   }

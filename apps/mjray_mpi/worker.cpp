@@ -7,6 +7,7 @@
 #include "frame_render.h"
 #include "messages.h"
 #include "unit_pool.h"
+#include "mjray/core/error.h"
 #include "mjray/job/prepared_job.h"
 #include "mjray/render/tile_render.h"
 
@@ -34,7 +35,7 @@ Next serve_tile_job(MpiWorld& world, const SceneDescription& scene, const JobOpt
   try {
     job = std::make_unique<PreparedJob>(scene, request.job, options);
   } catch (const std::exception& e) {
-    world.send(0, encode(FailedMessage{e.what()}));
+    world.send(0, encode(FailedMessage{error_message(e)}));
     return wait_for_finish(world);
   }
   const ImageSampler sampler(job->camera(), job->integrator(), job->width(), job->height(), options.render);

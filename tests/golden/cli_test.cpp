@@ -111,6 +111,16 @@ TEST_F(GoldenCli, UnderALimitOnAddressSpaceAManySphereSceneRendersAsWithout) {
   EXPECT_EQ(read_file(dir_ / "out.png"), read_file(dir_ / "plain.png"));
 }
 
+TEST_F(GoldenCli, RunningOutOfMemorySaysSoAndExitsOne) {
+  if (kSanitizerAllocator) GTEST_SKIP() << "AddressSanitizer needs more address space than any such limit";
+  // 11000 x 11000 pixels: within the image size limit, but some 4 GiB of buffers.
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 11000, 11000));
+  const RunResult r = run({"--quiet", scene.string()}, "ulimit -v 2000000");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: out of memory\n");
+  EXPECT_EQ(listing(dir_), "scene.lua");
+}
+
 TEST_F(GoldenCli, SceneErrorExitsOneNamingTheScriptLine) {
   const auto scene = write("scene.lua", "root = gr.node('root')\nm = gr.material({1, 0}, {0, 0, 0}, 10)\n");
   const RunResult r = run({scene.string()});

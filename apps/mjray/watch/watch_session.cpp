@@ -12,6 +12,7 @@
 #include "preview_server.h"
 #include "progressive_render.h"
 #include "render_watcher.h"
+#include "mjray/core/error.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/job/job_view.h"
 #include "mjray/lua/scene_loader.h"
@@ -95,8 +96,8 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
     std::vector<std::filesystem::path> watched = {cl.scene};
     watched.insert(watched.end(), read.begin(), read.end());
     files.watch(watched);
-    std::fprintf(stderr, "mjray: error: %s\n", e.what());
-    page.fail(e.what());
+    std::fprintf(stderr, "mjray: error: %s\n", error_message(e).c_str());
+    page.fail(error_message(e));
     return RoundEnd::kFailed;
   }
 }

@@ -28,6 +28,10 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// What an exception says to a user: its message, or "out of memory" for std::bad_alloc, whose
+/// own message ("std::bad_alloc") names a C++ type.
+std::string error_message(const std::exception& e);
+
 [[noreturn]] void check_failed(const char* condition, const char* file, int line);
 
 }  // namespace mjray

@@ -14,6 +14,7 @@ extern "C" {
 #include <lua.h>
 }
 
+#include "mjray/core/error.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/scene/scene_description.h"
 
@@ -158,7 +159,7 @@ int guarded(lua_State* L) {
   try {
     results = F(L);
   } catch (const std::exception& e) {
-    lua_pushstring(L, (caller_location(L).to_string() + ": " + e.what()).c_str());
+    lua_pushstring(L, (caller_location(L).to_string() + ": " + error_message(e)).c_str());
   } catch (...) {
     lua_pushstring(L, (caller_location(L).to_string() + ": internal error in a gr binding").c_str());
   }
