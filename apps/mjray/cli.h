@@ -24,6 +24,7 @@ struct CommandLine {
   AntialiasMethod antialias_method = AntialiasMethod::kGrid;  // --aa-method
   std::string accel;                   // --accel; empty = decided by -g/-o or bvh
   int threads = 0;                     // -j
+  std::optional<int> tile_size;        // --tile-size; default the renderer's
   std::optional<std::filesystem::path> output;  // --output
   std::optional<std::filesystem::path> outdir;  // --outdir
   bool print_stats = false;            // --stats

@@ -324,6 +324,29 @@ TEST_F(GoldenCli, SubdivisionTracesEachTilesPixelCornersOnceAndTheStatisticsSayS
   EXPECT_NE(read_file(json).find("\"antialias_method\": \"subdivide\""), std::string::npos) << read_file(json);
 }
 
+TEST_F(GoldenCli, TileSizeChangesHowTheImageIsCutNotTheImage) {
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 40, 20));
+  const auto render = [&](std::vector<std::string> extra, const std::string& name) {
+    std::vector<std::string> args = {"-a", "2", "--quiet", "--output", (dir_ / name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.push_back(scene.string());
+    const RunResult r = run(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return read_image(dir_ / name).pixels();
+  };
+  const auto tiles_of_16 = render({}, "16.png");
+  EXPECT_EQ(render({"--tile-size", "7"}, "7.png"), tiles_of_16);
+  EXPECT_EQ(render({"--tile-size", "1", "-j", "3"}, "1.png"), tiles_of_16);
+  // One tile of 64: each pixel corner is traced once (16-pixel tiles trace their borders twice).
+  const RunResult one_tile = run({"-a", "1", "--aa-method", "subdivide", "--tile-size", "64", "--quiet", "--stats",
+                                  "--output", (dir_ / "64.png").string(), scene.string()});
+  EXPECT_NE(one_tile.err.find("  rays      " + std::to_string(41 * 21) + " primary"), std::string::npos) << one_tile.err;
+  const RunResult zero = run({"--tile-size", "0", scene.string()});
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_EQ(zero.err, "mjray: --tile-size expects a whole number from 1 to 4096, got '0'\n"
+                      "(run 'mjray --help' for the options)\n");
+}
+
 TEST_F(GoldenCli, HelpListsEveryAcceleratorOfThisBuild) {
   const RunResult r = run({"--help"});
 #ifdef MJRAY_HAVE_EMBREE
