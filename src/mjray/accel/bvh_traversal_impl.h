@@ -3,7 +3,8 @@
 // build (SSE2, or plain C++ elsewhere), and with MJRAY_BVH_AVX 1 under
 // `#pragma GCC target("avx")`, chosen at run time. The pragma adds no fused multiply-add,
 // so the inlined watertight test rounds exactly as World::intersect_primitive's does.
-// Expects from the including file: kFarScale, kStackSize, StackEntry, TraversalView.
+// Expects from the including file: kFarScale, kStackSize, kPrefetchBytes, StackEntry,
+// TraversalView.
 
 /// What the slab tests need of a ray, splatted across SIMD lanes once per ray.
 struct BoxRay {
@@ -201,17 +202,15 @@ inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const 
   return Hit{tri->t, prim, tri->b1, tri->b2};
 }
 
-/// Asks for the memory of a stack entry (a node, or a leaf's primitives) to be loaded into the
-/// cache before it is needed.
+/// Asks for the memory of a stack entry to be loaded into the cache before it is needed: its
+/// node or its leaf's run, and what follows it in the layout (a node's runs, a run's sibling
+/// runs), which the ray mostly tests next. Trees that stay in the cache skip this.
 inline void prefetch(const TraversalView& bvh, const StackEntry& e) {
-  if ((e.child & BvhWideNode::kLeafFlag) == 0) {
-    const char* p = reinterpret_cast<const char*>(&bvh.node(e.child));
-    for (size_t at = 0; at < sizeof(BvhWideNode); at += 64) __builtin_prefetch(p + at);
-  } else {
-    const LeafRun run = bvh.leaf(e.child);
-    __builtin_prefetch(run.data);
-    __builtin_prefetch(run.data + (run.count * LeafRun::kLeafFloats - 1));
-  }
+  if (!bvh.prefetches) return;
+  // The place a word names, without a branch: a node's, or a leaf's run.
+  const uint32_t place = (e.child & BvhWideNode::kLeafFlag) != 0 ? BvhWideNode::first_of(e.child) : e.child;
+  const char* p = reinterpret_cast<const char*>(bvh.layout) + size_t(place) * BvhLayout::kPlaceBytes;
+  for (size_t at = 0; at < kPrefetchBytes; at += 64) __builtin_prefetch(p + at);
 }
 
 /// The query kQuery for t in `t_range`: the closest hit (written to *hit), any hit, or a
@@ -318,7 +317,8 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     const BvhWideNode& node = bvh.node(node_index);
     const unsigned mask = hit_children(node, box_ray, t_enter);
     const unsigned leaves = leaf_children(node);
-    // Compute the leaves' primitives first.
+    // Start loading the inner children's nodes, then test the leaves' primitives meanwhile.
+    for (unsigned m = mask & ~leaves; m != 0; m &= m - 1) prefetch(bvh, {node.child[size_t(std::countr_zero(m))], 0});
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
       const LeafRun run = bvh.leaf(node.child[i]);
