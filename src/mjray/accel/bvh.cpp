@@ -158,13 +158,13 @@ Bvh::Bvh(const PrimitiveSet& prims, BvhTree tree, int threads, BvhSimd simd)
                               " GiB of nodes and triangles; use --accel embree for this scene");
   }
   place.back() = uint32_t(bytes / BvhLayout::kPlaceBytes);
-  layout_bytes_ = bytes + BvhLayout::kPadding;
+  layout_size_ = bytes + BvhLayout::kPadding;
 
   // Move the nodes to their places, last first: a node's place is never before its index in
   // the array, so each lands where only nodes already moved were. The array grows in place
   // where its producer reserved room for the layout (built_tree does).
   layout_ = std::move(tree.nodes);
-  layout_.resize((layout_bytes_ + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode));
+  layout_.resize((layout_size_ + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode));
   std::byte* layout = layout_bytes();
   for (size_t n = node_count_; n-- > 0;) {
     const BvhWideNode node = layout_[n];
@@ -245,13 +245,13 @@ double Bvh::sah_cost(double node_cost, double primitive_cost) const {
   return cost;
 }
 
-size_t Bvh::memory_bytes() const { return layout_bytes_; }
+size_t Bvh::memory_bytes() const { return layout_size_; }
 
 template <BvhQuery kQuery>
 bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) const {
   if (node_count_ == 0 || !is_valid_ray(ray, t_range)) return false;
   const TraversalView view{layout_bytes(), &prims_, triangle_count_, prims_.shapes.empty(),
-                           layout_bytes_ >= kPrefetchFrom};
+                           layout_size_ >= kPrefetchFrom};
   constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {

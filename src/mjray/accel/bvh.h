@@ -165,7 +165,7 @@ class Bvh final : public Accelerator {
   /// The number of wide nodes (none for an empty world).
   size_t node_count() const { return node_count_; }
   /// The nodes and runs as traversal reads them (BvhLayout); exposed for tests.
-  std::span<const std::byte> layout() const { return {layout_bytes(), layout_bytes_}; }
+  std::span<const std::byte> layout() const { return {layout_bytes(), layout_size_}; }
   /// The number of primitives in the leaves.
   size_t leaf_primitive_count() const { return leaf_primitive_count_; }
   /// The surface area heuristic's estimate of a ray's cost through the tree: `node_cost` per
@@ -194,7 +194,7 @@ class Bvh final : public Accelerator {
   /// The BvhLayout, stored in the tree's own node array (grown, and read as bytes), so that
   /// laying the tree out needs no second copy of its nodes.
   BvhWideNodes layout_;
-  size_t layout_bytes_ = 0;
+  size_t layout_size_ = 0;
   size_t node_count_ = 0;
   size_t leaf_primitive_count_ = 0;
   Bounds3 bounds_;
