@@ -151,6 +151,34 @@ TEST_F(HardeningLimits, ExponentialInstancingIsRefusedBeforeFlattening) {
   EXPECT_LT(seconds_since(start), 5.0);
 }
 
+TEST_F(HardeningLimits, ExponentiallySharedEmptyNodesAreWalkedOnceNotOncePerPath) {
+  // 2^60 paths through nodes that hold nothing, beside one sphere: the size check passes (they
+  // add nothing), so the walk itself must skip them or it never ends.
+  const auto scene = load("local n = gr.node('empty')\n"
+                          "for i = 1, 60 do local p = gr.node('p' .. i) p:add_child(n) p:add_child(n) n = p end\n"
+                          "root = gr.node('root')\nroot:add_child(n)\nroot:add_child(gr.sphere('s'))\n"
+                          "root:add_child(n)\n" + render_call());
+  const World world = flatten(scene.jobs[0]);
+  EXPECT_EQ(world.primitive_count(), 1u);
+  EXPECT_EQ(world.shapes.size(), 1u);
+}
+
+TEST_F(HardeningLimits, ExponentiallySharedEmptyMeshesCountAsInstances) {
+  // The loader refuses empty meshes; built in C++, each instance of one is still an entry, so
+  // 2^60 of them are refused up front rather than walked.
+  std::shared_ptr<SceneNode> root = test::mesh(TriangleMesh{});
+  for (int i = 0; i < 60; ++i) root = test::group({root, root});
+  RenderJob job;
+  job.root = root;
+  try {
+    flatten(job);
+    FAIL() << "2^60 empty meshes were flattened";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("the scene expands to 1152921504606846976 primitives"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(HardeningLimits, TableMeshWithAHugeDeclaredFaceReadsOnlyWhatIsThere) {
   // Keys 4, 8, ..., 2^30 make the face's length (a border) about a billion with 31 entries.
   const auto start = Clock::now();

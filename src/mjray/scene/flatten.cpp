@@ -27,9 +27,11 @@ bool fits_float(const Matrix4& m) {
   return true;
 }
 
-/// What one emitted instance of a node costs: primitives plus the mesh vertices it copies.
+/// What one emitted instance of a node costs: primitives plus the mesh vertices it copies (at
+/// least 1 for a mesh, which is emitted even when empty, so that every emitted instance counts).
 uint64_t own_size(const SceneNode& node) {
-  if (node.mesh) return node.mesh->triangles.size() + node.mesh->positions.size() + node.mesh->normals.size();
+  if (node.mesh)
+    return std::max<uint64_t>(1, node.mesh->triangles.size() + node.mesh->positions.size() + node.mesh->normals.size());
   return node.shape ? 1 : 0;
 }
 
@@ -39,13 +41,23 @@ struct ExpandedSize {
   uint64_t shapes = 0;  ///< shape instances
 };
 
-/// The expanded size below the root, counting a node once per path to it (saturating),
+/// The scene graph as the flattener walks it: the expanded size, and each node's children
+/// that emit something. Only those are walked, so that the walk takes time in proportion to
+/// what it emits: empty nodes shared down many levels would otherwise be visited once per path,
+/// 2^60 times for a script of five lines.
+struct ExpandedGraph {
+  ExpandedSize size;
+  std::unordered_map<const SceneNode*, std::vector<const SceneNode*>> children_that_emit;
+};
+
+/// The expanded graph below the root, counting a node once per path to it (saturating),
 /// without recursion: a node DAG can be deeper than the C++ stack and, through shared children,
 /// expand exponentially.
-ExpandedSize expanded_size(const SceneNode& root) {
+ExpandedGraph expanded_graph(const SceneNode& root) {
   constexpr uint64_t kSaturated = std::numeric_limits<uint64_t>::max();
   const auto add = [](uint64_t a, uint64_t b) { return b > kSaturated - a ? kSaturated : a + b; };
   std::unordered_map<const SceneNode*, ExpandedSize> totals;
+  ExpandedGraph graph;
   std::set<const SceneNode*> in_progress;
   std::vector<std::pair<const SceneNode*, bool>> stack{{&root, false}};
   while (!stack.empty()) {
@@ -61,14 +73,18 @@ ExpandedSize expanded_size(const SceneNode& root) {
       continue;
     }
     ExpandedSize total{own_size(*node), node->shape && !node->mesh ? 1u : 0u};
+    std::vector<const SceneNode*> emitting;
     for (const auto& child : node->children) {
       const ExpandedSize& below = totals.at(child.get());
       total = {add(total.total, below.total), add(total.shapes, below.shapes)};
+      if (below.total > 0) emitting.push_back(child.get());
     }
     in_progress.erase(node);
     totals[node] = total;
+    if (!emitting.empty()) graph.children_that_emit.emplace(node, std::move(emitting));
   }
-  return totals.at(&root);
+  graph.size = totals.at(&root);
+  return graph;
 }
 
 class Flattener {
@@ -76,26 +92,28 @@ class Flattener {
   Flattener(World& world, std::vector<std::string>* warnings) : world_(world), warnings_(warnings) {}
 
   /// Emits the DAG below `root` in pre-order, children in order, with an explicit stack of
-  /// one entry per level (a node with thousands of children pushes no copies of its transform).
-  void visit(const SceneNode& root) {
+  /// one entry per level (a node with thousands of children pushes no copies of its transform);
+  /// subtrees that emit nothing are skipped.
+  void visit(const SceneNode& root, const ExpandedGraph& graph) {
     struct Level {
-      const SceneNode* node;
+      const std::vector<const SceneNode*>* children;
       Transform world_from_node;
       size_t next_child = 0;
     };
     std::vector<Level> stack;
     const auto enter = [&](const SceneNode& node, Transform world_from_node) {
       if (node.mesh || node.shape) emit(node, world_from_node);
-      stack.push_back({&node, std::move(world_from_node)});
+      const auto found = graph.children_that_emit.find(&node);
+      if (found != graph.children_that_emit.end()) stack.push_back({&found->second, std::move(world_from_node)});
     };
     enter(root, Transform() * root.parent_from_node);
     while (!stack.empty()) {
       Level& level = stack.back();
-      if (level.next_child == level.node->children.size()) {
+      if (level.next_child == level.children->size()) {
         stack.pop_back();
         continue;
       }
-      const SceneNode& child = *level.node->children[level.next_child++];
+      const SceneNode& child = *(*level.children)[level.next_child++];
       enter(child, level.world_from_node * child.parent_from_node);  // computed before the stack grows
     }
   }
@@ -186,7 +204,8 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   if (!job.root) return world;
   // Compute the expanded size first, so that a small script instancing a mesh 2^60 times
   // fails at once instead of filling memory.
-  const ExpandedSize expanded = expanded_size(*job.root);
+  const ExpandedGraph graph = expanded_graph(*job.root);
+  const ExpandedSize& expanded = graph.size;
   if (const uint64_t size = expanded.total; size > max_size)
     throw SceneError(job.where, "gr.render: the scene expands to " +
                                     (size == std::numeric_limits<uint64_t>::max() ? std::string("more than 10^19")
@@ -196,7 +215,7 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   // Each shape's entries are large: grown by doubling they would be copied and faulted in twice.
   world.shapes.reserve(size_t(expanded.shapes));
   world.primitives.shapes.reserve(size_t(expanded.shapes));
-  Flattener(world, warnings).visit(*job.root);
+  Flattener(world, warnings).visit(*job.root, graph);
   mark_transmissive(world);
   return world;
 }
