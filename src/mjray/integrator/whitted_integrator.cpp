@@ -88,7 +88,7 @@ Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const Shadin
                                       const LocalShading& local, const LightSample& sample,
                                       size_t light_index, TraceState& state, DeferredShadowScope& deferred) const {
   const Vector3 to_light = sample.position - si.point;
-  const float distance = length(to_light);
+  const float distance = sample.distance;  // length(to_light), found by the light
   if (!(distance > 0)) return {};
   const Vector3 l = to_light / distance;
   const float n_dot_l = dot(frame.n, l);

@@ -27,7 +27,8 @@ struct AreaLight {
   /// The light from the point at parameters u = (s, t) arriving at `receiver`.
   LightSample sample_li(const Point3& receiver, Point2 u) const {
     const Point3 p = point_at(u.u, u.v);
-    return {p, colour * attenuation(length(p - receiver))};
+    const float d = length(p - receiver);
+    return {p, colour * attenuation(d), d};
   }
   /// A ray from the point at parameters u_position in a uniformly drawn direction.
   EmittedRay sample_le(Point2 u_position, Point2 u_direction) const {

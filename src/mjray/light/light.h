@@ -4,7 +4,8 @@
 /// Each light is a struct in `<name>_light.h` with
 ///   - `int samples_per_axis(int requested)`: how many samples along each axis of the -s
 ///     grid it needs (1 for a point);
-///   - `LightSample sample_li(receiver, u)`: the point at u ∈ [0,1)² and the light from it;
+///   - `LightSample sample_li(receiver, u)`: the point at u ∈ [0,1)², the light from it and
+///     its distance from the receiver;
 ///   - `std::array<Point3, 4> sample_region()`: the parallelogram all those points lie in;
 ///   - `EmittedRay sample_le(u_position, u_direction)`, `EmissionPoint emission_point(u)` and
 ///     `Color power()`: emission, for transports that start at lights;

@@ -15,6 +15,7 @@ namespace mjray {
 struct LightSample {
   Point3 position;
   Color intensity;
+  float distance;  ///< |position − receiver|, as the falloff used it
 };
 
 /// A ray leaving a light, with the flux it carries when it stands for the whole light (divide

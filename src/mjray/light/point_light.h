@@ -22,7 +22,8 @@ struct PointLight {
   int samples_per_axis(int /*requested*/) const { return 1; }
   /// The light arriving at `receiver` (u is unused: there is one point to sample).
   LightSample sample_li(const Point3& receiver, Point2 /*u*/) const {
-    return {position, colour * attenuation(length(position - receiver))};
+    const float d = length(position - receiver);
+    return {position, colour * attenuation(d), d};
   }
   /// A ray in a uniformly drawn direction.
   EmittedRay sample_le(Point2 /*u_position*/, Point2 u_direction) const {
