@@ -16,7 +16,8 @@ namespace mjray {
 inline constexpr uint64_t kMaxFlattenedSize = uint64_t(1) << 27;
 
 /// Walks the DAG once from the job's root, composing world_from_node down each path, and emits
-/// every primitive it reaches (a node reached along k paths is emitted k times). Meshes become
+/// every primitive it reaches (a node reached along k paths is emitted k times; subtrees that
+/// hold nothing are not walked, so the time follows what is emitted). Meshes become
 /// world-space triangles; spheres and cubes keep their transforms. Geometry without a material
 /// gets the default grey and a warning (added to `warnings`, once per node). Throws SceneError
 /// (at the gr.render line) when the expanded scene is larger than `max_size` or the graph has a
