@@ -33,6 +33,23 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 MODELS = os.path.join(os.environ.get("SHARED", os.path.join(ROOT, "..", "shared")), "models")
 
 
+BVH = ["--accel", "bvh"]
+EMBREE_DEFAULT = ["--accel", "embree", "--embree-flags", "default"]
+EMBREE_ROBUST = ["--accel", "embree", "--embree-flags", "robust"]
+
+
+def print_header():
+    print("| mesh | rays | baseline BVH | new BVH | Embree default | Embree robust | new / baseline | new / faster Embree |")
+    print("|---|---|---|---|---|---|---|---|")
+
+
+def print_row(mesh, kind, median, against_baseline, against_embree, faster):
+    """median: rays/s of the baseline BVH, the new BVH, Embree default and Embree robust."""
+    name = os.path.splitext(os.path.basename(mesh))[0]
+    print(f"| {name} | {kind} | {median[0]:.2f} | {median[1]:.2f} | {median[2]:.2f} | {median[3]:.2f} "
+          f"| {against_baseline:.2f}× | {against_embree:.2f}× ({faster}) |", flush=True)
+
+
 def command_line(bench, mesh, kind, accel):
     return [bench, "--mesh", os.path.join(MODELS, mesh), "--rays", kind, "--threads", "1", "--build-threads", "2",
             "--repeat", "5", "--min-ms", "150", "--max-rays", "200000"] + accel
@@ -77,36 +94,31 @@ def main():
     args = parser.parse_args()
     if args.side_by_side:
         return side_by_side_table(args)
-    print("| mesh | rays | baseline BVH | new BVH | Embree default | Embree robust | new / baseline | new / faster Embree |")
-    print("|---|---|---|---|---|---|---|---|")
+    print_header()
     for mesh in args.meshes:
         for kind in args.kinds:
             rounds = []
             for _ in range(args.rounds):
-                rounds.append((rays_per_second(args.baseline, mesh, kind, ["--accel", "bvh"]),
-                               rays_per_second(args.new, mesh, kind, ["--accel", "bvh"]),
-                               rays_per_second(args.new, mesh, kind, ["--accel", "embree", "--embree-flags", "default"]),
-                               rays_per_second(args.new, mesh, kind, ["--accel", "embree", "--embree-flags", "robust"])))
+                rounds.append((rays_per_second(args.baseline, mesh, kind, BVH),
+                               rays_per_second(args.new, mesh, kind, BVH),
+                               rays_per_second(args.new, mesh, kind, EMBREE_DEFAULT),
+                               rays_per_second(args.new, mesh, kind, EMBREE_ROBUST)))
             median = [statistics.median(r[i] for r in rounds) for i in range(4)]
             faster = "default" if median[2] >= median[3] else "robust"
             against_baseline = statistics.median(r[1] / r[0] for r in rounds)
             against_embree = statistics.median(r[1] / max(r[2], r[3]) for r in rounds)
-            name = os.path.splitext(os.path.basename(mesh))[0]
-            print(f"| {name} | {kind} | {median[0]:.2f} | {median[1]:.2f} | {median[2]:.2f} | {median[3]:.2f} "
-                  f"| {against_baseline:.2f}× | {against_embree:.2f}× ({faster}) |", flush=True)
+            print_row(mesh, kind, median, against_baseline, against_embree, faster)
 
 
 def side_by_side_table(args):
-    print("| mesh | rays | baseline BVH | new BVH | Embree default | Embree robust | new / baseline | new / faster Embree |")
-    print("|---|---|---|---|---|---|---|---|")
-    bvh = ["--accel", "bvh"]
+    print_header()
     for mesh in args.meshes:
         for kind in args.kinds:
             builds, default, robust = [], [], []
             for _ in range(args.rounds):
-                builds += side_by_side((args.baseline, mesh, kind, bvh), (args.new, mesh, kind, bvh))
-                default += side_by_side((args.new, mesh, kind, bvh), (args.new, mesh, kind, ["--accel", "embree", "--embree-flags", "default"]))
-                robust += side_by_side((args.new, mesh, kind, bvh), (args.new, mesh, kind, ["--accel", "embree", "--embree-flags", "robust"]))
+                builds += side_by_side((args.baseline, mesh, kind, BVH), (args.new, mesh, kind, BVH))
+                default += side_by_side((args.new, mesh, kind, BVH), (args.new, mesh, kind, EMBREE_DEFAULT))
+                robust += side_by_side((args.new, mesh, kind, BVH), (args.new, mesh, kind, EMBREE_ROBUST))
             median = [statistics.median(x) for x in ([b[0] for b in builds], [b[1] for b in builds],
                                                      [d[1] for d in default], [r[1] for r in robust])]
             against_baseline = statistics.median(b[1] / b[0] for b in builds)
@@ -114,9 +126,7 @@ def side_by_side_table(args):
             against_robust = statistics.median(r[0] / r[1] for r in robust)
             # The faster Embree is the one mjray compares worse against.
             against_embree, faster = min((against_default, "default"), (against_robust, "robust"))
-            name = os.path.splitext(os.path.basename(mesh))[0]
-            print(f"| {name} | {kind} | {median[0]:.2f} | {median[1]:.2f} | {median[2]:.2f} | {median[3]:.2f} "
-                  f"| {against_baseline:.2f}× | {against_embree:.2f}× ({faster}) |", flush=True)
+            print_row(mesh, kind, median, against_baseline, against_embree, faster)
 
 
 if __name__ == "__main__":
