@@ -41,22 +41,22 @@ struct ExpandedSize {
   uint64_t shapes = 0;  ///< shape instances
 };
 
-/// The scene graph as the flattener walks it: the expanded size, and each node's children
-/// that emit something. Only those are walked, so that the walk takes time in proportion to
-/// what it emits: empty nodes shared down many levels would otherwise be visited once per path,
-/// 2^60 times for a script of five lines.
-struct ExpandedGraph {
+/// A node as the flattener sees it: what it expands to, and its children that emit something.
+/// Only those are walked, so that the walk takes time in proportion to what it emits: empty
+/// nodes shared down many levels would otherwise be visited once per path, 2^60 times for a
+/// script of five lines.
+struct ExpandedNode {
   ExpandedSize size;
-  std::unordered_map<const SceneNode*, std::vector<const SceneNode*>> children_that_emit;
+  std::vector<const SceneNode*> children_that_emit;
 };
+using ExpandedGraph = std::unordered_map<const SceneNode*, ExpandedNode>;
 
-/// The expanded graph below the root, counting a node once per path to it (saturating),
+/// Every node below the root, expanded, counting a node once per path to it (saturating),
 /// without recursion: a node DAG can be deeper than the C++ stack and, through shared children,
 /// expand exponentially.
 ExpandedGraph expanded_graph(const SceneNode& root) {
   constexpr uint64_t kSaturated = std::numeric_limits<uint64_t>::max();
   const auto add = [](uint64_t a, uint64_t b) { return b > kSaturated - a ? kSaturated : a + b; };
-  std::unordered_map<const SceneNode*, ExpandedSize> totals;
   ExpandedGraph graph;
   std::set<const SceneNode*> in_progress;
   std::vector<std::pair<const SceneNode*, bool>> stack{{&root, false}};
@@ -64,26 +64,24 @@ ExpandedGraph expanded_graph(const SceneNode& root) {
     const auto [node, children_done] = stack.back();
     stack.pop_back();
     if (!children_done) {
-      if (totals.count(node)) continue;
+      if (graph.count(node)) continue;
       if (!in_progress.insert(node).second)
         throw SceneError(node->where, "node '" + node->name + "' is its own ancestor: the scene graph has a cycle");
       stack.push_back({node, true});
       for (const auto& child : node->children)
-        if (!totals.count(child.get())) stack.push_back({child.get(), false});
+        if (!graph.count(child.get())) stack.push_back({child.get(), false});
       continue;
     }
-    ExpandedSize total{own_size(*node), node->shape && !node->mesh ? 1u : 0u};
-    std::vector<const SceneNode*> emitting;
+    ExpandedNode expanded{{own_size(*node), node->shape && !node->mesh ? 1u : 0u}, {}};
+    ExpandedSize& total = expanded.size;
     for (const auto& child : node->children) {
-      const ExpandedSize& below = totals.at(child.get());
+      const ExpandedSize& below = graph.at(child.get()).size;
       total = {add(total.total, below.total), add(total.shapes, below.shapes)};
-      if (below.total > 0) emitting.push_back(child.get());
+      if (below.total > 0) expanded.children_that_emit.push_back(child.get());
     }
     in_progress.erase(node);
-    totals[node] = total;
-    if (!emitting.empty()) graph.children_that_emit.emplace(node, std::move(emitting));
+    graph.emplace(node, std::move(expanded));
   }
-  graph.size = totals.at(&root);
   return graph;
 }
 
@@ -103,8 +101,8 @@ class Flattener {
     std::vector<Level> stack;
     const auto enter = [&](const SceneNode& node, Transform world_from_node) {
       if (node.mesh || node.shape) emit(node, world_from_node);
-      const auto found = graph.children_that_emit.find(&node);
-      if (found != graph.children_that_emit.end()) stack.push_back({&found->second, std::move(world_from_node)});
+      const auto& children = graph.at(&node).children_that_emit;
+      if (!children.empty()) stack.push_back({&children, std::move(world_from_node)});
     };
     enter(root, Transform() * root.parent_from_node);
     while (!stack.empty()) {
@@ -205,7 +203,7 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   // Compute the expanded size first, so that a small script instancing a mesh 2^60 times
   // fails at once instead of filling memory.
   const ExpandedGraph graph = expanded_graph(*job.root);
-  const ExpandedSize& expanded = graph.size;
+  const ExpandedSize& expanded = graph.at(job.root.get()).size;
   if (const uint64_t size = expanded.total; size > max_size)
     throw SceneError(job.where, "gr.render: the scene expands to " +
                                     (size == std::numeric_limits<uint64_t>::max() ? std::string("more than 10^19")
