@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "interrupts.h"
 #include "job_images.h"
 #include "render_watcher.h"
 #include "mjray/accel/uniform_grid.h"
@@ -23,7 +24,11 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
   }
 
   // Compute the flat world, its accelerator, the camera and the integrator; then the image.
-  const PreparedJob job(scene, index, options);
+  // Preparing cannot stop half-way and has nothing to keep, so Ctrl-C ends it at once.
+  const PreparedJob job = [&] {
+    const ExitOnInterrupt exit_on_interrupt;
+    return PreparedJob(scene, index, options);
+  }();
   for (const auto& w : job.warnings()) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
   JobStatistics stats = prepared_job_statistics(job, parse_seconds);
   render_prepared_job(job, plan.state, options, fingerprint, run, stats);

@@ -2,21 +2,17 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <string>
 
 #include <unistd.h>
 
+#include "interrupts.h"
 #include "mjray/core/error.h"
 
 namespace mjray {
 
 namespace {
-
-std::atomic<bool> g_interrupted{false};
-
-extern "C" void on_interrupt(int) { g_interrupted = true; }
 
 std::string clock_text(double seconds) {
   const long s = long(seconds + 0.5);
@@ -35,16 +31,6 @@ constexpr double kFirstShareInterval = 0.2;
 constexpr double kQuietLineInterval = 5.0;
 
 }  // namespace
-
-void install_interrupt_handlers() {
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-}
-
-bool interrupted() { return g_interrupted; }
 
 RenderWatcher::RenderWatcher(ImageRender& render, std::filesystem::path image_path, WatchOptions options)
     : render_(render),

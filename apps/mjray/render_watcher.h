@@ -1,6 +1,7 @@
 #pragma once
 /// Watches a running render from a second thread: shows progress on stderr, rewrites the
-/// image with the finished tiles every few seconds, and turns SIGINT/SIGTERM into a stop.
+/// image with the finished tiles every few seconds, and stops it when the user interrupts
+/// (interrupts.h).
 
 #include <atomic>
 #include <condition_variable>
@@ -14,11 +15,6 @@
 #include "mjray/render/image_render.h"
 
 namespace mjray {
-
-/// Installs SIGINT and SIGTERM handlers that set the flag interrupted() reads.
-void install_interrupt_handlers();
-/// Whether the user asked to stop (Ctrl-C or SIGTERM).
-bool interrupted();
 
 /// How the watcher reports.
 struct WatchOptions {

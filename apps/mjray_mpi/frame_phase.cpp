@@ -6,9 +6,9 @@
 #include <future>
 
 #include "frame_render.h"
+#include "interrupts.h"
 #include "messages.h"
 #include "rank_failed.h"
-#include "render_watcher.h"
 #include "mjray/job/job_outputs.h"
 
 namespace mjray {

@@ -2,6 +2,7 @@
 // resume to the same bytes (through a stop hook and a real SIGINT), statistics and progress.
 
 #include <csignal>
+#include <cstring>
 #include <fstream>
 #include <regex>
 #include <string>
@@ -192,6 +193,49 @@ TEST(GoldenRender, RealSigintKeepsThePartialImageAndResumeFinishesItIdentically)
   std::filesystem::remove_all(dir);
 }
 
+/// A glass ball and a light and nothing to catch the light: with `--caustics 1e9` its photon
+/// pass traces a billion photons (minutes) but stores none, so it is slow and small.
+std::filesystem::path write_slow_to_prepare_scene(const std::filesystem::path& dir) {
+  std::ofstream(dir / "scene.lua")
+      << "local root = gr.node('root')\n"
+         "local ball = gr.nh_sphere('ball', {0, 0, 0}, 1)\n"
+         "ball:set_material(gr.fresneldiectricmaterial({0, 0, 0}, {0.5, 0.5, 0.5}, 50, 1, 1.5))\n"
+         "root:add_child(ball)\n"
+         "gr.render(root, 'out.png', 16, 16, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0, 0, 0},\n"
+         "          {gr.light({0, 4, 0}, {1, 1, 1}, {1, 0, 0})})\n";
+  return dir / "scene.lua";
+}
+
+TEST(GoldenRender, InterruptWhilePreparingEndsAtOnceAndWritesNothing) {
+  const auto dir = test::make_temp_dir("prepare-interrupt");
+  const auto scene = write_slow_to_prepare_scene(dir);
+  const auto image = dir / "out.png";
+  for (const int sig : {SIGINT, SIGTERM}) {
+    const pid_t pid = test::spawn({test::mjray_binary().string(), "--quiet", "--caustics", "1e9", "-j", "1", "--output",
+                                   image.string(), scene.string()});
+    ASSERT_GE(pid, 0);
+    // The script runs in milliseconds; by now the photon pass is under way.
+    std::this_thread::sleep_for(std::chrono::milliseconds(800));
+    kill(pid, sig);
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        test::kill_and_reap(pid);
+        FAIL() << strsignal(sig) << " during the photon pass did not end mjray within 20 s";
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    // An exit of its own with 130, not death by the signal (the script was over).
+    ASSERT_TRUE(WIFEXITED(status)) << strsignal(sig);
+    EXPECT_EQ(WEXITSTATUS(status), 130) << strsignal(sig);
+    // Nothing was rendered, so there is no partial image or state to resume from.
+    EXPECT_FALSE(std::filesystem::exists(image)) << strsignal(sig);
+    EXPECT_FALSE(std::filesystem::exists(image.string() + ".mjray-state")) << strsignal(sig);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(GoldenRender, ProgressLinesAreMonotoneAndEndAt100AndStatsJsonHasEveryKey) {
   const auto dir = test::make_temp_dir("progress");
   const auto scene = write_slow_scene(dir);
@@ -256,6 +300,11 @@ long long supersampled_in(const std::filesystem::path& json) {
   return at == std::string::npos ? -1 : std::stoll(text.substr(at + 23));
 }
 
+/// Waits, after a frame of sphere_field(1200, 150, 100, …) is written, until the next one is
+/// rendering: preparing it takes a few milliseconds (an interrupt then ends mjray with nothing
+/// of that frame written), rendering it 0.7 s on one thread.
+void wait_until_rendering() { std::this_thread::sleep_for(std::chrono::milliseconds(150)); }
+
 TEST(GoldenRender, ResumeFinishesAnInterruptedAnimationIdentically) {
   const auto dir = test::make_temp_dir("animation");
   std::string script = sphere_field(1200, 150, 100, "'frame' .. i .. '.png'");
@@ -267,6 +316,7 @@ TEST(GoldenRender, ResumeFinishesAnInterruptedAnimationIdentically) {
   // Interrupted in frame 2: frame 1 complete, frame 2 partial with its state, frame 3 absent.
   Child first({"--accel", "none", "-j", "1", scene.string()});
   ASSERT_TRUE(first.wait_for("mjray: wrote " + (dir / "frame1.png").string())) << first.log();
+  wait_until_rendering();
   first.interrupt();
   ASSERT_EQ(first.exit_code(), 130) << first.log();
   ASSERT_TRUE(std::filesystem::exists(dir / "frame2.png.mjray-state"));
@@ -297,6 +347,7 @@ TEST(GoldenRender, ResumeFinishesInterruptedJpegAndExrFramesIdentically) {
     const std::string frame1 = std::string("frame1.") + format, frame2 = std::string("frame2.") + format;
     Child first({"--accel", "none", "-j", "1", scene.string()});
     ASSERT_TRUE(first.wait_for("mjray: wrote " + (dir / frame1).string())) << first.log();
+    wait_until_rendering();
     first.interrupt();
     ASSERT_EQ(first.exit_code(), 130) << first.log();
     ASSERT_TRUE(std::filesystem::exists(dir / (frame2 + ".mjray-state"))) << format;

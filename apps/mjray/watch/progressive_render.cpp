@@ -5,9 +5,9 @@
 #include <chrono>
 #include <thread>
 
+#include "interrupts.h"
 #include "preview_image.h"
 #include "progress_estimate.h"
-#include "render_watcher.h"
 #include "mjray/job/prepared_job.h"
 
 namespace mjray {

@@ -1,17 +1,16 @@
 #include "watch_session.h"
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <vector>
 
 #include "file_watcher.h"
+#include "interrupts.h"
 #include "live_state.h"
 #include "local_render.h"
 #include "preview_server.h"
 #include "progressive_render.h"
-#include "render_watcher.h"
 #include "mjray/core/error.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/job/job_view.h"
@@ -31,14 +30,10 @@ constexpr milliseconds kQuietPeriod{200};
 /// How one round of the loop ended.
 enum class RoundEnd { kFinished, kFailed, kStale, kInterrupted };
 
-/// Runs the script with the default Ctrl-C: a script stuck in a loop can then still be
+/// Runs the script with Ctrl-C ending the process: a script stuck in a loop can then still be
 /// ended, and nothing is lost (nothing renders while it runs).
 SceneDescription load_interruptibly(const CommandLine& cl, std::vector<std::filesystem::path>& inputs_read) {
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  struct Reinstall {
-    ~Reinstall() { install_interrupt_handlers(); }
-  } reinstall;
+  const ExitOnInterrupt exit_on_interrupt;
   SceneLoadOptions load = cl.load;
   load.inputs_read = &inputs_read;
   return load_scene(cl.scene, load);
