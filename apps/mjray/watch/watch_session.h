@@ -8,7 +8,8 @@ namespace mjray {
 
 /// Runs the watch loop for the command line `cl` (cl.watch set) and returns the exit code:
 /// 0 when Ctrl-C ends it between renders, 130 when it interrupts a render (the partial image
-/// and its state are written, as without --watch). Throws OutputError when the page cannot
+/// and its state are written, as without --watch); while the script runs or a frame is
+/// prepared, Ctrl-C ends the process at once with 130. Throws OutputError when the page cannot
 /// be served.
 int run_watch_session(const CommandLine& cl);
 
