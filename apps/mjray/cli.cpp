@@ -204,7 +204,7 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--aa-threshold", [&](auto& o, auto& v) { cl.antialias_threshold = float(parse_real(o, v, 0, 1, "a number in (0, 1]")); }},
       {"--lua-memory", [&](auto& o, auto& v) { cl.load.lua_memory_bytes = parse_bytes(o, v); }},
       {"--scene-timeout", [&](auto& o, auto& v) {
-         cl.load.timeout_seconds = parse_real(o, v, 0, 1e6, "a number of seconds from 0 to 1000000");
+         cl.load.timeout_seconds = parse_real(o, v, 0, 1e6, "a number of seconds above 0, at most 1000000");
        }},
       {"--caustics", [&](auto& o, auto& v) { cl.caustic_photons = parse_photon_count(o, v); }},
       {"--gi", [&](auto& o, auto& v) { cl.global_photons = parse_photon_count(o, v); }},
@@ -253,7 +253,13 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
 }
 
 void Parser::add_camera_and_animation_options(CommandLine& cl) {
-  const ValueHandler define = [&](auto& o, auto& v) { cl.load.defines.push_back(parse_define(o, v)); };
+  const ValueHandler define = [&](auto& o, auto& v) {
+    auto definition = parse_define(o, v);
+    for (const auto& [name, value] : cl.load.defines)
+      if (name == definition.first)
+        throw UsageError(o + " " + v + ": " + name + " is already defined (as " + name + "=" + value + "); define it once");
+    cl.load.defines.push_back(std::move(definition));
+  };
   with_value_.insert({
       {"--spp", [&](auto& o, auto& v) { cl.samples_per_pixel = int(parse_integer(o, v, 1, 4096)); }},
       {"--aperture", [&](auto& o, auto& v) { cl.aperture_radius = float(parse_at_least_zero(o, v, "a lens radius of at least 0")); }},

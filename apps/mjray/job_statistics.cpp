@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <system_error>
 #include <utility>
 
 #include <sys/resource.h>
 
 #include "mjray/core/error.h"
 #include "mjray/io/atomic_file.h"
+#include "mjray/job/job_outputs.h"
 
 namespace mjray {
 
@@ -215,6 +217,14 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
   }
   out += "]\n";
   write_file_atomically(path, out);
+}
+
+void check_statistics_output(const SceneDescription& scene, const std::filesystem::path& path) {
+  check_not_an_input(scene, path, {scene.script.string(), 0}, "--stats-json");
+  // Its folder is made as --output's is; a failure to make it shows in the check that follows.
+  std::error_code ignored;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
+  check_writable_place(path);
 }
 
 }  // namespace mjray

@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
     const std::vector<size_t> frames = selected_jobs(scene, options.frames);
     check_job_views(scene, frames, options);
     for (const auto& w : check_outputs(scene, options.outputs, frames)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
+    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
     if (cl.video) check_video(cl, scene, frames, options);
     install_interrupt_handlers();
     const bool animation = scene.jobs.size() > 1;

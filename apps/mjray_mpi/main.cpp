@@ -16,6 +16,7 @@
 #include "coordinator.h"
 #include "interrupts.h"
 #include "job_split.h"
+#include "job_statistics.h"
 #include "local_render.h"
 #include "mpi_world.h"
 #include "rank_failed.h"
@@ -126,7 +127,7 @@ int main(int argc, char** argv) {
     if (!cl.quiet)
       for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
     for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
+    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
     LocalRunOptions run;
     run.quiet = cl.quiet;
     run.print_stats = cl.print_stats;

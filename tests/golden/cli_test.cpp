@@ -153,6 +153,12 @@ TEST_F(GoldenCli, BadCommandLinesExitTwo) {
   r = run({"--transform-order", "sideways", scene.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "mjray: --transform-order expects pre, post or auto, got 'sideways'\n" + hint);
+  r = run({"-D", "size=1", "--define", "size=2", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: --define size=2: size is already defined (as size=1); define it once\n" + hint);
+  r = run({"--scene-timeout", "0", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: --scene-timeout expects a number of seconds above 0, at most 1000000, got '0'\n" + hint);
   EXPECT_EQ(listing(dir_), "scene.lua");  // nothing rendered
 }
 
@@ -214,6 +220,46 @@ TEST_F(GoldenCli, OutdirThatIsAFileFailsBeforeRendering) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err.rfind("mjray: error: cannot create the output folder '" + (dir_ / "blocker").string() + "': ", 0), 0u)
       << r.err;
+}
+
+TEST_F(GoldenCli, StatsJsonThatCannotBeWrittenFailsBeforeRendering) {
+  const auto scene = write("scene.lua", tiny_scene());
+  fs::create_directory(dir_ / "taken.json");
+  RunResult r = run({"--quiet", "--stats-json", (dir_ / "taken.json").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: cannot write '" + (dir_ / "taken.json").string() + "': it is a folder\n");
+  EXPECT_EQ(listing(dir_), "scene.lua taken.json");  // no image
+  write("blocker", "x");
+  r = run({"--quiet", "--stats-json", (dir_ / "blocker" / "s.json").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: cannot write '" + (dir_ / "blocker" / "s.json").string() + "': folder '" +
+                       (dir_ / "blocker").string() + "' does not exist\n");
+  EXPECT_EQ(listing(dir_), "blocker scene.lua taken.json");
+  // A missing folder is made, as --output's is.
+  r = run({"--quiet", "--stats-json", (dir_ / "new" / "s.json").string(), scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_file(dir_ / "new" / "s.json").front(), '[');
+}
+
+TEST_F(GoldenCli, ANulInAnOutputNameLeavesTheFileBeforeItAlone) {
+  // The system would read 'notes.txt\0.png' as notes.txt: the scene would replace it.
+  write("notes.txt", "my notes");
+  const auto scene = write("scene.lua", tiny_scene("'notes.txt\\0.png'"));
+  const RunResult r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("gr.render: argument 2 (output file) must be a string without control characters"),
+            std::string::npos) << r.err;
+  EXPECT_EQ(read_file(dir_ / "notes.txt"), "my notes");
+  EXPECT_EQ(listing(dir_), "notes.txt scene.lua");
+}
+
+TEST_F(GoldenCli, AResumeStateThatCannotBeReadIsAClearError) {
+  const auto scene = write("scene.lua", tiny_scene());
+  fs::create_directory(dir_ / "out.png.mjray-state");
+  const RunResult r = run({"--quiet", "--resume", scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + (dir_ / "out.png.mjray-state").string() +
+                       ": cannot read the resume state file (remove it, or render without --resume)\n");
 }
 
 TEST_F(GoldenCli, OutputWithASceneThatRendersTwiceIsAnError) {

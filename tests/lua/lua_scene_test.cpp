@@ -666,6 +666,28 @@ TEST_F(LuaErrors, EmptyOutputName) {
             at(2) + "gr.render: argument 2 (output file) must be a file name, got an empty string");
 }
 
+TEST_F(LuaErrors, ControlCharactersInStringsAreRefusedAndShownEscaped) {
+  // A NUL would end the file name where the system reads it: 'notes.txt\0.png' passes as a PNG
+  // here and would then replace notes.txt.
+  EXPECT_EQ(error_of("root = gr.node('root')\n" + render_call("root", "'notes.txt\\0.png'")),
+            at(2) + "gr.render: argument 2 (output file) must be a string without control characters (such as a "
+                    "NUL, a tab or a line break), got the string 'notes.txt\\0.png'");
+  // An escape or a line break in a name would reach the terminal raw in later messages.
+  EXPECT_EQ(error_of("s = gr.sphere('a\\27[31mred\\nmjray: wrote x.png')\n"),
+            at(1) + "gr.sphere: argument 1 (name) must be a string without control characters (such as a NUL, a "
+                    "tab or a line break), got the string 'a\\27[31mred\\nmjray: wrote x.png'");
+  EXPECT_EQ(error_of("m = gr.mesh('m', 'model\\0.obj')\n"),
+            at(1) + "gr.mesh: argument 2 (file name) must be a string without control characters (such as a NUL, "
+                    "a tab or a line break), got the string 'model\\0.obj'");
+}
+
+TEST_F(LuaErrors, EachArgumentIsCheckedInTheOrderWritten) {
+  EXPECT_EQ(error_of("n = gr.node('n')\nn:translate(1, 'a')\n"),
+            at(2) + "node:translate: argument 2 (y) must be a number, got the string 'a'");
+  EXPECT_EQ(error_of("n = gr.node('n')\nn:translate({1, 2, 3})\n"),
+            at(2) + "node:translate: argument 1 (x) must be a number, got a table of 3 values");
+}
+
 TEST_F(LuaErrors, SceneThatNeverRenders) {
   EXPECT_EQ(error_of("root = gr.node('root')\n"), (dir_ / "scene.lua").string() + ": the scene never calls gr.render");
 }

@@ -7,6 +7,7 @@
 
 #include "file_watcher.h"
 #include "interrupts.h"
+#include "job_statistics.h"
 #include "live_state.h"
 #include "local_render.h"
 #include "preview_server.h"
@@ -57,7 +58,7 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
     const std::vector<size_t> jobs = selected_jobs(scene, options.frames);
     check_job_views(scene, jobs, options);
     for (const auto& w : check_outputs(scene, options.outputs, jobs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (cl.stats_json) check_not_an_input(scene, *cl.stats_json, {cl.scene.string(), 0}, "--stats-json");
+    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
 
     std::vector<FrameDescription> frames;
     for (const size_t i : jobs)

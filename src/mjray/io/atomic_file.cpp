@@ -104,4 +104,12 @@ void write_file_atomically(const fs::path& path, std::string_view bytes) {
   if (const std::string reason = tmp.commit(path); !reason.empty()) fail_write(path, reason);
 }
 
+void check_writable_place(const fs::path& path) {
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) fail_write(path, "folder '" + folder.string() + "' does not exist");
+  if (fs::is_directory(path, ec)) fail_write(path, "it is a folder");
+  if (::access(folder.c_str(), W_OK) != 0) fail_write(path, "folder '" + folder.string() + "' is not writable");
+}
+
 }  // namespace mjray

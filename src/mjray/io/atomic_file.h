@@ -11,4 +11,8 @@ namespace mjray {
 /// unwritable folder, disk full), removing the temporary file.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+/// Checks before any work is done that write_file_atomically can write `path`: an existing,
+/// writable folder and no folder of that name. Throws OutputError("cannot write 'PATH': REASON").
+void check_writable_place(const std::filesystem::path& path);
+
 }  // namespace mjray

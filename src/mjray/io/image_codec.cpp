@@ -1,9 +1,6 @@
 #include "mjray/io/image_codec.h"
 
 #include <cctype>
-#include <system_error>
-
-#include <unistd.h>
 
 #include "mjray/core/error.h"
 #include "mjray/io/atomic_file.h"
@@ -75,11 +72,7 @@ void check_image_output_format(const fs::path& path, const EncodeOptions& option
 
 void check_image_output(const fs::path& path, const EncodeOptions& options) {
   check_image_output_format(path, options);
-  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) fail_write(path, "folder '" + folder.string() + "' does not exist");
-  if (fs::is_directory(path, ec)) fail_write(path, "it is a folder");
-  if (::access(folder.c_str(), W_OK) != 0) fail_write(path, "folder '" + folder.string() + "' is not writable");
+  check_writable_place(path);
 }
 
 void write_image(const Image& image, const fs::path& path, const EncodeOptions& options) {

@@ -133,7 +133,7 @@ int gr_mesh(lua_State* L) {
   const char* fn = "gr.mesh";
   std::shared_ptr<const TriangleMesh> mesh;
   if (lua_type(L, 2) == LUA_TSTRING) {
-    mesh = file_mesh(L, lua_tostring(L, 2), fn);
+    mesh = file_mesh(L, arg_string(L, 2, fn, "file name"), fn);
   } else if (lua_type(L, 2) == LUA_TTABLE) {
     if (lua_type(L, 3) != LUA_TTABLE) bad_argument(L, fn, 3, "faces", "a table of faces");
     mesh = table_mesh(L, fn);
@@ -167,8 +167,8 @@ int node_set_material(lua_State* L) {
 
 int node_translate(lua_State* L) {
   auto& node = arg_node(L, 1, "node:translate", "self");
-  const Vector3 d(float(arg_number(L, 2, "node:translate", "x")), float(arg_number(L, 3, "node:translate", "y")),
-                  float(arg_number(L, 4, "node:translate", "z")));
+  const Vector3 d{float(arg_number(L, 2, "node:translate", "x")), float(arg_number(L, 3, "node:translate", "y")),
+                  float(arg_number(L, 4, "node:translate", "z"))};
   node->transform_calls.push_back(Transform::translate(d));
   return 0;
 }

@@ -4,8 +4,35 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string_view>
 
 namespace mjray::lua {
+
+namespace {
+
+bool is_control_character(char c) {
+  const auto code = static_cast<unsigned char>(c);
+  return code < 0x20 || code == 0x7f;
+}
+
+/// `text` as a message shows it: control characters as the Lua escapes that write them, so
+/// that none reaches the terminal raw.
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    if (!is_control_character(c)) {
+      out += c;
+      continue;
+    }
+    out += '\\';
+    if (c == '\n') out += 'n';
+    else if (c == '\t') out += 't';
+    else out += std::to_string(static_cast<unsigned char>(c));
+  }
+  return out;
+}
+
+}  // namespace
 
 // --- argument readers (throw ArgumentError; `guarded` adds the caller's file:line) --------
 
@@ -25,7 +52,7 @@ std::string describe(lua_State* L, int index) {
       size_t length = 0;
       const char* text = lua_tolstring(L, index, &length);
       if (length == 0) return "an empty string";
-      return "the string '" + std::string(text, std::min(length, kMaxShown)) + (length > kMaxShown ? "...'" : "'");
+      return "the string '" + printable({text, std::min(length, kMaxShown)}) + (length > kMaxShown ? "...'" : "'");
     }
     case LUA_TTABLE: {
       const auto count = lua_rawlen(L, index);
@@ -61,12 +88,18 @@ std::string describe(lua_State* L, int index) {
 }
 
 /// A string; numbers are accepted and converted, as luaL_checkstring does in the course binding.
+/// Control characters are refused: a NUL would cut a file name short where the system reads it
+/// (another file than the one checked), and a line break or an escape in a name would reach
+/// the terminal raw in messages.
 std::string arg_string(lua_State* L, int index, const char* fn, const char* what) {
   const int type = lua_type(L, index);
   if (type != LUA_TSTRING && type != LUA_TNUMBER) bad_argument(L, fn, index, what, "a string");
   size_t length = 0;
   const char* text = lua_tolstring(L, index, &length);
-  return std::string(text, length);
+  std::string result(text, length);
+  if (std::any_of(result.begin(), result.end(), is_control_character))
+    bad_argument(L, fn, index, what, "a string without control characters (such as a NUL, a tab or a line break)");
+  return result;
 }
 
 namespace {

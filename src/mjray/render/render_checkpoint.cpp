@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <ios>
 #include <string>
 
 #include "mjray/core/byte_buffer.h"
@@ -34,9 +35,18 @@ void write_checkpoint(const RenderCheckpoint& c, const std::filesystem::path& pa
 }
 
 RenderCheckpoint read_checkpoint(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path.string() + ": cannot open the resume state file (render without --resume)");
-  return decode_checkpoint(std::string((std::istreambuf_iterator<char>(in)), {}), path);
+  const auto unreadable = [&] {
+    return SceneError(path.string() + ": cannot read the resume state file (remove it, or render without --resume)");
+  };
+  std::string data;
+  try {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw unreadable();
+    data.assign(std::istreambuf_iterator<char>(in), {});
+  } catch (const std::ios_base::failure&) {  // a read error, such as a folder of that name
+    throw unreadable();
+  }
+  return decode_checkpoint(data, path);
 }
 
 RenderCheckpoint decode_checkpoint(const std::string& data, const std::filesystem::path& path) {
