@@ -262,6 +262,20 @@ TEST_F(GoldenCli, AResumeStateThatCannotBeReadIsAClearError) {
                        ": cannot read the resume state file (remove it, or render without --resume)\n");
 }
 
+TEST_F(GoldenCli, NodesWithoutAMaterialAreNamedThreeAtATime) {
+  const auto scene = write("scene.lua",
+                           "root = gr.node('root')\n"
+                           "for i = 1, 5 do root:add_child(gr.nh_sphere('s' .. i, {i, 0, -5}, 0.5)) end\n"
+                           "gr.render(root, 'out.png', 4, 4, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, "
+                           "{gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n");
+  const RunResult r = run({"--quiet", scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const std::string at = "mjray: warning: " + scene.string() + ":2: '";
+  EXPECT_EQ(r.err, at + "s1' has no material; rendering it grey\n" + at + "s2' has no material; rendering it grey\n" +
+                       at + "s3' has no material; rendering it grey\n" +
+                       "mjray: warning: 2 more nodes have no material; rendering them grey too\n");
+}
+
 TEST_F(GoldenCli, OutputWithASceneThatRendersTwiceIsAnError) {
   const auto scene = write("scene.lua", tiny_scene("'a.png'") + tiny_scene("'b.png'"));
   const RunResult r = run({"--quiet", "--output", (dir_ / "one.png").string(), scene.string()});

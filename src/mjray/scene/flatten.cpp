@@ -116,12 +116,21 @@ class Flattener {
     }
   }
 
+  /// After visit: one line for the nodes without a material past the first few named.
+  void finish() {
+    if (warnings_ && unmaterialled_.size() > kNamedUnmaterialled)
+      warnings_->push_back(std::to_string(unmaterialled_.size() - kNamedUnmaterialled) +
+                           " more nodes have no material; rendering them grey too");
+  }
+
  private:
+  /// Nodes without a material that get a warning of their own; the rest are counted in one.
+  static constexpr size_t kNamedUnmaterialled = 3;
+
   uint32_t material_index(const SceneNode& node) {
     const Material* key = node.material.get();
-    if (!key && warned_.insert(&node).second && warnings_)
-      warnings_->push_back(node.where.to_string() + ": '" + node.name +
-                           "' has no material; rendering it grey");
+    if (!key && unmaterialled_.insert(&node).second && warnings_ && unmaterialled_.size() <= kNamedUnmaterialled)
+      warnings_->push_back(node.where.to_string() + ": '" + node.name + "' has no material; rendering it grey");
     auto [it, inserted] = material_ids_.try_emplace(key, uint32_t(world_.materials.size()));
     if (inserted) world_.materials.push_back(key ? *key : default_material());
     return it->second;
@@ -175,7 +184,7 @@ class Flattener {
   World& world_;
   std::vector<std::string>* warnings_;
   std::map<const Material*, uint32_t> material_ids_;
-  std::set<const SceneNode*> warned_;
+  std::set<const SceneNode*> unmaterialled_;
 };
 
 /// Flags the primitives whose material lets shadow rays through (none: no flags at all).
@@ -213,7 +222,9 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   // Each shape's entries are large: grown by doubling they would be copied and faulted in twice.
   world.shapes.reserve(size_t(expanded.shapes));
   world.primitives.shapes.reserve(size_t(expanded.shapes));
-  Flattener(world, warnings).visit(*job.root, graph);
+  Flattener flattener(world, warnings);
+  flattener.visit(*job.root, graph);
+  flattener.finish();
   mark_transmissive(world);
   return world;
 }

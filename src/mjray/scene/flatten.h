@@ -19,10 +19,10 @@ inline constexpr uint64_t kMaxFlattenedSize = uint64_t(1) << 27;
 /// every primitive it reaches (a node reached along k paths is emitted k times; subtrees that
 /// hold nothing are not walked, so the time follows what is emitted). Meshes become
 /// world-space triangles; spheres and cubes keep their transforms. Geometry without a material
-/// gets the default grey and a warning (added to `warnings`, once per node). Throws SceneError
-/// (at the gr.render line) when the expanded scene is larger than `max_size` or the graph has a
-/// cycle, and (at the node's line) when a composed transform leaves float range. Iterative:
-/// any depth is fine.
+/// gets the default grey and a warning (added to `warnings`: one per node for the first three,
+/// then one line counting the rest). Throws SceneError (at the gr.render line) when the
+/// expanded scene is larger than `max_size` or the graph has a cycle, and (at the node's line)
+/// when a composed transform leaves float range. Iterative: any depth is fine.
 World flatten(const RenderJob& job, std::vector<std::string>* warnings = nullptr,
               uint64_t max_size = kMaxFlattenedSize);
 
