@@ -80,7 +80,8 @@ int32_t corner_index(lua_State* L, int value, size_t count, const char* fn, cons
   const lua_Integer index = lua_tointegerx(L, value, &is_integer);
   if (!is_integer) fail(fn, where + " " + what + " must be a whole number (0-based), got " + describe(L, value));
   if (index == -1) return -1;
-  if (index < 0 || index >= lua_Integer(count))
+  if (index < 0) fail(fn, where + " " + what + " index must be 0 or more (-1 or nil: none), got " + std::to_string(index));
+  if (index >= lua_Integer(count))
     fail(fn, where + " has " + what + " index " + std::to_string(index) +
                  (count ? " outside 0.." + std::to_string(count - 1) : std::string(", but the mesh has no ") + what + "s"));
   return int32_t(index);
