@@ -10,10 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "mjray/accel/brute_force.h"
+#include "mjray/core/error.h"
 #include "mjray/core/rng.h"
 #include "mjray/integrator/photon/density_estimate.h"
 #include "mjray/integrator/photon/kd_tree.h"
 #include "mjray/integrator/photon/photon_emission.h"
+#include "mjray/integrator/photon/photon_maps.h"
 #include "mjray/integrator/photon/photon_tracer.h"
 #include "mjray/scene/flatten.h"
 #include "support/scene_builder.h"
@@ -197,12 +199,17 @@ TEST(PhotonEmission, BallsAroundShapesHoldThemTightly) {
   EXPECT_NEAR(balls[1].centre.y, 1, 1e-5f);
 }
 
-TEST(PhotonTracer, PhotonsAreTheSameForAnyNumberOfThreads) {
+/// A floor, a glass ball and a mirror-ish ball under a point light: both maps store photons.
+World photon_world() {
   const Material glass = FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, 1.5f};
-  const World world = world_of({test::mesh(test::floor_quad(10), PhongMaterial{{0.8f, 0.8f, 0.8f}, {0, 0, 0}, 1}),
-                                test::sphere({0, 1.5f, 0}, 1, glass),
-                                test::sphere({2, 1, 0}, 1, ReflectiveMaterial{{{0.5f, 0.2f, 0.2f}, {0, 0, 0}, 1}, 0.5f})},
-                               {PointLight{{0, 6, 1}, {1, 1, 1}, {1, 0, 0}}});
+  return world_of({test::mesh(test::floor_quad(10), PhongMaterial{{0.8f, 0.8f, 0.8f}, {0, 0, 0}, 1}),
+                   test::sphere({0, 1.5f, 0}, 1, glass),
+                   test::sphere({2, 1, 0}, 1, ReflectiveMaterial{{{0.5f, 0.2f, 0.2f}, {0, 0, 0}, 1}, 0.5f})},
+                  {PointLight{{0, 6, 1}, {1, 1, 1}, {1, 0, 0}}});
+}
+
+TEST(PhotonTracer, PhotonsAreTheSameForAnyNumberOfThreads) {
+  const World world = photon_world();
   const BruteForce accel(world.primitives);
   for (const PhotonPaths paths : {PhotonPaths::kCaustic, PhotonPaths::kGlobal}) {
     const PhotonSource source =
@@ -221,6 +228,48 @@ TEST(PhotonTracer, PhotonsAreTheSameForAnyNumberOfThreads) {
     // Another seed draws other photons.
     const TracedPhotons other = trace_photons(world, accel, source, paths, 10000, 6, 2);
     EXPECT_NE(other.photons.front().position, one.photons.front().position);
+  }
+}
+
+TEST(PhotonTracer, AMapThatWouldHoldTooManyIsRefusedFromItsFirstPhotons) {
+  const World world = photon_world();
+  const BruteForce accel(world.primitives);
+  const PhotonSource source(world.lights);
+  constexpr uint64_t kCount = 4 * kPilotPhotons;
+  const TracedPhotons all = trace_photons(world, accel, source, PhotonPaths::kGlobal, kCount, 5, 2);
+  const uint64_t held = all.photons.size();
+  // With room, the map is the one traced without a limit (the first photons, traced apart, change nothing).
+  const TracedPhotons with_room = trace_photons(world, accel, source, PhotonPaths::kGlobal, kCount, 5, 2, held + held / 10);
+  ASSERT_EQ(with_room.photons.size(), held);
+  EXPECT_EQ(with_room.rays, all.rays);
+  for (size_t i = 0; i < held; ++i) ASSERT_EQ(with_room.photons[i].position, all.photons[i].position) << i;
+  // Without, the expectation is the first photons' rate times the count: the rest were never traced.
+  const uint64_t first = trace_photons(world, accel, source, PhotonPaths::kGlobal, kPilotPhotons, 5, 2).photons.size();
+  try {
+    trace_photons(world, accel, source, PhotonPaths::kGlobal, kCount, 5, 2, held / 2);
+    FAIL() << "a map of " << held << " photons with room for " << held / 2;
+  } catch (const PhotonMapTooLarge& e) {
+    EXPECT_EQ(e.expected_photons(), 4 * first);
+    EXPECT_NEAR(double(e.expected_photons()), double(held), 0.02 * double(held));
+  }
+  // A map of no more photons than the first ones is refused once they are traced.
+  EXPECT_THROW(trace_photons(world, accel, source, PhotonPaths::kGlobal, 1000, 5, 2, 10), PhotonMapTooLarge);
+}
+
+TEST(PhotonMaps, AMapThatWouldNotFitSaysWhichOptionAndHowMuchMemory) {
+  const World world = photon_world();
+  const BruteForce accel(world.primitives);
+  PhotonSettings settings;
+  settings.global_photons = 4 * kPilotPhotons;
+  settings.memory_budget_bytes = 1 << 20;
+  try {
+    const PhotonMaps maps(world, accel, settings, 5, 2);
+    FAIL() << "the map fitted in 1 MiB";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("--gi 262144: the photon map would hold about ", 0), 0u) << message;
+    EXPECT_NE(message.find(" of memory, more than the 1 MiB available; ask for fewer photons"), std::string::npos)
+        << message;
   }
 }
 

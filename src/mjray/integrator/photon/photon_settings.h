@@ -17,6 +17,8 @@ struct PhotonSettings {
   /// the objects photons are aimed at, for the global map of the box around its photons.
   float caustic_radius_share = 0.02f;
   float global_radius_share = 0.05f;
+  /// The memory a map may take while it is made; 0: what the machine has available then.
+  uint64_t memory_budget_bytes = 0;
 
   bool caustics() const { return caustic_photons > 0; }
   bool global_illumination() const { return global_photons > 0; }

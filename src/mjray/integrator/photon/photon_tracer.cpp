@@ -72,7 +72,8 @@ struct Tracer {
 }  // namespace
 
 TracedPhotons trace_photons(const World& world, const Accelerator& accel, const PhotonSource& source,
-                            PhotonPaths paths, uint64_t count, uint64_t seed, int threads) {
+                            PhotonPaths paths, uint64_t count, uint64_t seed, int threads, uint64_t max_stored) {
+  static_assert(kPilotPhotons % kChunk == 0);
   TracedPhotons result;
   if (source.empty() || count == 0) return result;
   const Tracer tracer{world, accel, source, paths, count, seed};
@@ -81,14 +82,31 @@ TracedPhotons trace_photons(const World& world, const Accelerator& accel, const 
   const uint64_t chunks = (count + kChunk - 1) / kChunk;
   std::vector<std::vector<Photon>> stored(chunks);
   std::atomic<uint64_t> rays{0};
-  parallel_for(int(chunks), threads, [&](int chunk, int) {
-    const uint64_t first = uint64_t(chunk) * kChunk, last = std::min(count, first + kChunk);
-    uint64_t chunk_rays = 0;
-    for (uint64_t i = first; i < last; ++i) chunk_rays += tracer.trace(i, stored[size_t(chunk)]);
-    rays += chunk_rays;
-  });
-  size_t total = 0;
-  for (const auto& list : stored) total += list.size();
+  const auto trace_chunks = [&](uint64_t from, uint64_t to) {
+    parallel_for(int(to - from), threads, [&](int k, int) {
+      const uint64_t chunk = from + uint64_t(k);
+      const uint64_t first = chunk * kChunk, last = std::min(count, first + kChunk);
+      uint64_t chunk_rays = 0;
+      for (uint64_t i = first; i < last; ++i) chunk_rays += tracer.trace(i, stored[size_t(chunk)]);
+      rays += chunk_rays;
+    });
+  };
+  const auto stored_in = [&](uint64_t to) {
+    uint64_t total = 0;
+    for (uint64_t chunk = 0; chunk < to; ++chunk) total += stored[size_t(chunk)].size();
+    return total;
+  };
+  // The first photons say how many the whole map will hold (their indices are spread over
+  // the lights as all of them are): a map that cannot fit is refused before it fills memory.
+  const uint64_t pilot = std::min(chunks, kPilotPhotons / kChunk);
+  trace_chunks(0, pilot);
+  if (pilot < chunks) {
+    const double expected = double(stored_in(pilot)) / double(pilot * kChunk) * double(count);
+    if (expected > double(max_stored)) throw PhotonMapTooLarge(uint64_t(expected));
+    trace_chunks(pilot, chunks);
+  }
+  const uint64_t total = stored_in(chunks);
+  if (total > max_stored) throw PhotonMapTooLarge(total);
   result.photons.reserve(total);
   for (auto& list : stored) {
     result.photons.insert(result.photons.end(), list.begin(), list.end());

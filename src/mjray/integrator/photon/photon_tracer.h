@@ -2,6 +2,7 @@
 /// Photon paths from the lights through the scene, and the photons they leave on surfaces.
 
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
@@ -32,11 +33,29 @@ struct TracedPhotons {
   uint64_t rays = 0;
 };
 
+/// Thrown by trace_photons when the map would hold more photons than it may.
+class PhotonMapTooLarge : public std::runtime_error {
+ public:
+  explicit PhotonMapTooLarge(uint64_t expected_photons)
+      : std::runtime_error("the photon map would hold too many photons"), expected_photons_(expected_photons) {}
+  /// The photons the whole map would hold, as its first photons say.
+  uint64_t expected_photons() const { return expected_photons_; }
+
+ private:
+  uint64_t expected_photons_;
+};
+
+/// Photons of a map traced before the rest, to tell how many the whole map will hold.
+inline constexpr uint64_t kPilotPhotons = 65536;
+
 /// Traces photons [0, count) from `source` on `threads` threads. Stored flux respects each
 /// light's falloff along the path up to the first diffuse scattering: the density of photons
 /// falls as 1/d², so a photon that has travelled d carries d²·att(d) times its share. The
-/// result depends only on the scene, the source, count and seed.
+/// result depends only on the scene, the source, count and seed. Throws PhotonMapTooLarge,
+/// before the rest are traced, when the first kPilotPhotons store at a rate that would make
+/// the map hold more than `max_stored` photons (or when it does).
 TracedPhotons trace_photons(const World& world, const Accelerator& accel, const PhotonSource& source,
-                            PhotonPaths paths, uint64_t count, uint64_t seed, int threads);
+                            PhotonPaths paths, uint64_t count, uint64_t seed, int threads,
+                            uint64_t max_stored = UINT64_MAX);
 
 }  // namespace mjray

@@ -1,0 +1,13 @@
+#pragma once
+/// How much memory this process may still take, for refusing work that cannot fit before it
+/// fills the machine.
+
+#include <cstdint>
+
+namespace mjray {
+
+/// The memory the system could give now (MemAvailable of /proc/meminfo), capped by this
+/// process's address-space limit (ulimit -v) less what it already maps; 0 when unknown.
+uint64_t available_memory_bytes();
+
+}  // namespace mjray
