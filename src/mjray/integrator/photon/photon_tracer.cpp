@@ -82,30 +82,39 @@ TracedPhotons trace_photons(const World& world, const Accelerator& accel, const 
   const uint64_t chunks = (count + kChunk - 1) / kChunk;
   std::vector<std::vector<Photon>> stored(chunks);
   std::atomic<uint64_t> rays{0};
-  const auto trace_chunks = [&](uint64_t from, uint64_t to) {
-    parallel_for(int(to - from), threads, [&](int k, int) {
-      const uint64_t chunk = from + uint64_t(k);
+  std::vector<uint8_t> traced(chunks, 0);
+  const auto trace_chunks = [&](const std::vector<uint64_t>& list) {
+    parallel_for(int(list.size()), threads, [&](int k, int) {
+      const uint64_t chunk = list[size_t(k)];
       const uint64_t first = chunk * kChunk, last = std::min(count, first + kChunk);
       uint64_t chunk_rays = 0;
       for (uint64_t i = first; i < last; ++i) chunk_rays += tracer.trace(i, stored[size_t(chunk)]);
       rays += chunk_rays;
     });
+    for (const uint64_t chunk : list) traced[size_t(chunk)] = 1;
   };
-  const auto stored_in = [&](uint64_t to) {
-    uint64_t total = 0;
-    for (uint64_t chunk = 0; chunk < to; ++chunk) total += stored[size_t(chunk)].size();
-    return total;
-  };
-  // The first photons say how many the whole map will hold (their indices are spread over
-  // the lights as all of them are): a map that cannot fit is refused before it fills memory.
-  const uint64_t pilot = std::min(chunks, kPilotPhotons / kChunk);
-  trace_chunks(0, pilot);
-  if (pilot < chunks) {
-    const double expected = double(stored_in(pilot)) / double(pilot * kChunk) * double(count);
+  // A sample of chunks spread evenly over the indices (which stratify the lights and targets in
+  // order) says how many photons the whole map will hold: one that cannot fit is refused
+  // before the rest fill the memory.
+  constexpr uint64_t kPilotChunks = kPilotPhotons / kChunk;
+  if (chunks > kPilotChunks) {
+    std::vector<uint64_t> pilot;
+    for (uint64_t j = 0; j < kPilotChunks; ++j) pilot.push_back(j * chunks / kPilotChunks);
+    trace_chunks(pilot);
+    uint64_t pilot_photons = 0, pilot_stored = 0;
+    for (const uint64_t chunk : pilot) {
+      pilot_photons += std::min(count, (chunk + 1) * kChunk) - chunk * kChunk;
+      pilot_stored += stored[size_t(chunk)].size();
+    }
+    const double expected = double(pilot_stored) / double(pilot_photons) * double(count);
     if (expected > double(max_stored)) throw PhotonMapTooLarge(uint64_t(expected));
-    trace_chunks(pilot, chunks);
   }
-  const uint64_t total = stored_in(chunks);
+  std::vector<uint64_t> rest;
+  for (uint64_t chunk = 0; chunk < chunks; ++chunk)
+    if (!traced[size_t(chunk)]) rest.push_back(chunk);
+  trace_chunks(rest);
+  uint64_t total = 0;
+  for (const auto& list : stored) total += list.size();
   if (total > max_stored) throw PhotonMapTooLarge(total);
   result.photons.reserve(total);
   for (auto& list : stored) {

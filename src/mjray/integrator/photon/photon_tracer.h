@@ -45,15 +45,16 @@ class PhotonMapTooLarge : public std::runtime_error {
   uint64_t expected_photons_;
 };
 
-/// Photons of a map traced before the rest, to tell how many the whole map will hold.
+/// Photons of a map traced before the rest, in chunks spread over all of its photon indices,
+/// to tell how many the whole map will hold.
 inline constexpr uint64_t kPilotPhotons = 65536;
 
 /// Traces photons [0, count) from `source` on `threads` threads. Stored flux respects each
 /// light's falloff along the path up to the first diffuse scattering: the density of photons
 /// falls as 1/d², so a photon that has travelled d carries d²·att(d) times its share. The
 /// result depends only on the scene, the source, count and seed. Throws PhotonMapTooLarge,
-/// before the rest are traced, when the first kPilotPhotons store at a rate that would make
-/// the map hold more than `max_stored` photons (or when it does).
+/// before the rest are traced, when the kPilotPhotons traced first store at a rate that would
+/// make the map hold more than `max_stored` photons (or when it does).
 TracedPhotons trace_photons(const World& world, const Accelerator& accel, const PhotonSource& source,
                             PhotonPaths paths, uint64_t count, uint64_t seed, int threads,
                             uint64_t max_stored = UINT64_MAX);
