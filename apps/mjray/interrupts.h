@@ -1,7 +1,7 @@
 #pragma once
 /// Ctrl-C and SIGTERM. While a render runs they ask it to stop, so that the partial image and
 /// its state are kept; while work that cannot stop half-way and leaves nothing to keep runs
-/// (building the accelerator, the photon pass), they end the process at once.
+/// (the scene script, building the accelerator, the photon pass), they end the process at once.
 
 namespace mjray {
 

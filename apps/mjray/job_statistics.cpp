@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <system_error>
 #include <utility>
 
 #include <sys/resource.h>
@@ -221,9 +220,7 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
 
 void check_statistics_output(const SceneDescription& scene, const std::filesystem::path& path) {
   check_not_an_input(scene, path, {scene.script.string(), 0}, "--stats-json");
-  // Its folder is made as --output's is; a failure to make it shows in the check that follows.
-  std::error_code ignored;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ignored);
+  create_folder_of(path);
   check_writable_place(path);
 }
 

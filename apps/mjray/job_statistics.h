@@ -70,7 +70,8 @@ std::string statistics_json(const JobStatistics& s);
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path);
 
 /// Checks before rendering that --stats-json can go to `path`: not a file the scene reads, and
-/// a writable folder (created if missing, as --output's is). Throws SceneError or OutputError.
+/// a writable folder (created if missing, as --output's is: call it after every check that
+/// makes nothing). Throws SceneError or OutputError.
 void check_statistics_output(const SceneDescription& scene, const std::filesystem::path& path);
 
 }  // namespace mjray

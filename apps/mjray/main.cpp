@@ -80,9 +80,14 @@ int main(int argc, char** argv) {
     }
   }
 
+  // Ctrl-C ends the run at once until a render has something to keep (interrupts.h).
+  install_interrupt_handlers();
   try {
     const auto start = std::chrono::steady_clock::now();
-    const SceneDescription scene = load_scene(cl.scene, cl.load);
+    const SceneDescription scene = [&] {
+      const ExitOnInterrupt exit_on_interrupt;
+      return load_scene(cl.scene, cl.load);
+    }();
     const double parse_seconds = seconds_since(start);
     for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
     if (!cl.quiet)
@@ -92,9 +97,8 @@ int main(int argc, char** argv) {
     const std::vector<size_t> frames = selected_jobs(scene, options.frames);
     check_job_views(scene, frames, options);
     for (const auto& w : check_outputs(scene, options.outputs, frames)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
     if (cl.video) check_video(cl, scene, frames, options);
-    install_interrupt_handlers();
+    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
     const bool animation = scene.jobs.size() > 1;
     std::vector<JobStatistics> statistics;
     const JobFingerprints fingerprints(scene, options);

@@ -232,8 +232,8 @@ TEST_F(GoldenCli, StatsJsonThatCannotBeWrittenFailsBeforeRendering) {
   write("blocker", "x");
   r = run({"--quiet", "--stats-json", (dir_ / "blocker" / "s.json").string(), scene.string()});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "mjray: error: cannot write '" + (dir_ / "blocker" / "s.json").string() + "': folder '" +
-                       (dir_ / "blocker").string() + "' does not exist\n");
+  EXPECT_EQ(r.err.rfind("mjray: error: cannot write '" + (dir_ / "blocker" / "s.json").string() +
+                            "': cannot create its folder '" + (dir_ / "blocker").string() + "': ", 0), 0u) << r.err;
   EXPECT_EQ(listing(dir_), "blocker scene.lua taken.json");
   // A missing folder is made, as --output's is.
   r = run({"--quiet", "--stats-json", (dir_ / "new" / "s.json").string(), scene.string()});
@@ -263,17 +263,24 @@ TEST_F(GoldenCli, AResumeStateThatCannotBeReadIsAClearError) {
 }
 
 TEST_F(GoldenCli, NodesWithoutAMaterialAreNamedThreeAtATime) {
-  const auto scene = write("scene.lua",
-                           "root = gr.node('root')\n"
-                           "for i = 1, 5 do root:add_child(gr.nh_sphere('s' .. i, {i, 0, -5}, 0.5)) end\n"
-                           "gr.render(root, 'out.png', 4, 4, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, "
-                           "{gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n");
-  const RunResult r = run({"--quiet", scene.string()});
+  const auto scene_of = [&](int nodes) {
+    return write("scene.lua", "root = gr.node('root')\n"
+                              "for i = 1, " + std::to_string(nodes) + " do root:add_child(gr.nh_sphere('s' .. i, "
+                              "{i, 0, -5}, 0.5)) end\n"
+                              "gr.render(root, 'out.png', 4, 4, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.2, 0.2, 0.2}, "
+                              "{gr.light({2, 3, 5}, {1, 1, 1}, {1, 0, 0})})\n");
+  };
+  const std::string at = "mjray: warning: " + (dir_ / "scene.lua").string() + ":2: '";
+  const std::string first_three = at + "s1' has no material; rendering it grey\n" + at +
+                                  "s2' has no material; rendering it grey\n" + at +
+                                  "s3' has no material; rendering it grey\n";
+  RunResult r = run({"--quiet", scene_of(3).string()});
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  const std::string at = "mjray: warning: " + scene.string() + ":2: '";
-  EXPECT_EQ(r.err, at + "s1' has no material; rendering it grey\n" + at + "s2' has no material; rendering it grey\n" +
-                       at + "s3' has no material; rendering it grey\n" +
-                       "mjray: warning: 2 more nodes have no material; rendering them grey too\n");
+  EXPECT_EQ(r.err, first_three);
+  r = run({"--quiet", scene_of(4).string()});
+  EXPECT_EQ(r.err, first_three + "mjray: warning: 1 more node has no material; rendering it grey too\n");
+  r = run({"--quiet", scene_of(300).string()});
+  EXPECT_EQ(r.err, first_three + "mjray: warning: 297 more nodes have no material; rendering them grey too\n");
 }
 
 TEST_F(GoldenCli, OutputWithASceneThatRendersTwiceIsAnError) {

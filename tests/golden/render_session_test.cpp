@@ -214,7 +214,8 @@ TEST(GoldenRender, InterruptWhilePreparingEndsAtOnceAndWritesNothing) {
     const pid_t pid = test::spawn({test::mjray_binary().string(), "--quiet", "--caustics", "1e9", "-j", "1", "--output",
                                    image.string(), scene.string()});
     ASSERT_GE(pid, 0);
-    // The script runs in milliseconds; by now the photon pass is under way.
+    // The script runs in milliseconds; by now the photon pass is mostly under way (were it
+    // not, the interrupt would end the script the same way).
     std::this_thread::sleep_for(std::chrono::milliseconds(800));
     kill(pid, sig);
     int status = 0;
@@ -226,7 +227,7 @@ TEST(GoldenRender, InterruptWhilePreparingEndsAtOnceAndWritesNothing) {
       }
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    // An exit of its own with 130, not death by the signal (the script was over).
+    // An exit of its own with 130, not death by the signal.
     ASSERT_TRUE(WIFEXITED(status)) << strsignal(sig);
     EXPECT_EQ(WEXITSTATUS(status), 130) << strsignal(sig);
     // Nothing was rendered, so there is no partial image or state to resume from.

@@ -671,14 +671,14 @@ TEST_F(LuaErrors, ControlCharactersInStringsAreRefusedAndShownEscaped) {
   // here and would then replace notes.txt.
   EXPECT_EQ(error_of("root = gr.node('root')\n" + render_call("root", "'notes.txt\\0.png'")),
             at(2) + "gr.render: argument 2 (output file) must be a string without control characters (such as a "
-                    "NUL, a tab or a line break), got the string 'notes.txt\\0.png'");
+                    "NUL, a tab or a line break), got the string 'notes.txt\\000.png'");
   // An escape or a line break in a name would reach the terminal raw in later messages.
-  EXPECT_EQ(error_of("s = gr.sphere('a\\27[31mred\\nmjray: wrote x.png')\n"),
+  EXPECT_EQ(error_of("s = gr.sphere('a\\0271\\\\2\\nmjray: wrote x.png')\n"),
             at(1) + "gr.sphere: argument 1 (name) must be a string without control characters (such as a NUL, a "
-                    "tab or a line break), got the string 'a\\27[31mred\\nmjray: wrote x.png'");
+                    "tab or a line break), got the string 'a\\0271\\\\2\\nmjray: wrote x.png'");
   EXPECT_EQ(error_of("m = gr.mesh('m', 'model\\0.obj')\n"),
             at(1) + "gr.mesh: argument 2 (file name) must be a string without control characters (such as a NUL, "
-                    "a tab or a line break), got the string 'model\\0.obj'");
+                    "a tab or a line break), got the string 'model\\000.obj'");
 }
 
 TEST_F(LuaErrors, EachArgumentIsCheckedInTheOrderWritten) {

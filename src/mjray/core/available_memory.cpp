@@ -22,16 +22,47 @@ uint64_t proc_kilobytes(const char* file, const std::string& name) {
   return 0;
 }
 
+/// The room left under ulimit -v; 0 when there is no limit.
+uint64_t address_space_room() {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return 0;
+  const uint64_t mapped = proc_kilobytes("/proc/self/status", "VmSize:");
+  return limit.rlim_cur > mapped ? limit.rlim_cur - mapped : 1;
+}
+
+/// The room left under a cgroup's limit, read from its two files; 0 when it has none ("max",
+/// or cgroup v1's largest page-aligned number).
+uint64_t room_under(const std::string& limit_file, const std::string& usage_file) {
+  std::ifstream limit_in(limit_file), usage_in(usage_file);
+  uint64_t limit = 0, usage = 0;
+  if (!(limit_in >> limit) || !(usage_in >> usage) || limit >= (uint64_t(1) << 62)) return 0;
+  return limit > usage ? limit - usage : 1;
+}
+
+/// The room left under the memory limit of this process's own cgroup, which containers and
+/// batch systems set (cgroup v2, else v1's memory controller); 0 when there is none.
+uint64_t cgroup_room() {
+  std::ifstream membership("/proc/self/cgroup");
+  std::string line;
+  while (std::getline(membership, line)) {
+    if (line.rfind("0::", 0) == 0) {
+      const std::string folder = "/sys/fs/cgroup" + line.substr(3);
+      if (const uint64_t room = room_under(folder + "/memory.max", folder + "/memory.current")) return room;
+    } else if (const size_t at = line.find(":memory:"); at != std::string::npos) {
+      const std::string folder = "/sys/fs/cgroup/memory" + line.substr(at + 8);
+      if (const uint64_t room = room_under(folder + "/memory.limit_in_bytes", folder + "/memory.usage_in_bytes"))
+        return room;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 uint64_t available_memory_bytes() {
-  uint64_t available = proc_kilobytes("/proc/meminfo", "MemAvailable:");
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-    const uint64_t mapped = proc_kilobytes("/proc/self/status", "VmSize:");
-    const uint64_t room = limit.rlim_cur > mapped ? limit.rlim_cur - mapped : 1;
-    available = available == 0 ? room : std::min(available, room);
-  }
+  uint64_t available = 0;
+  for (const uint64_t room : {proc_kilobytes("/proc/meminfo", "MemAvailable:"), address_space_room(), cgroup_room()})
+    if (room > 0) available = available == 0 ? room : std::min(available, room);
   return available;
 }
 

@@ -6,8 +6,9 @@
 
 namespace mjray {
 
-/// The memory the system could give now (MemAvailable of /proc/meminfo), capped by this
-/// process's address-space limit (ulimit -v) less what it already maps; 0 when unknown.
+/// The memory the system could give now (MemAvailable of /proc/meminfo), capped by the room
+/// left under this process's address-space limit (ulimit -v) and its cgroup's memory limit;
+/// 0 when unknown.
 uint64_t available_memory_bytes();
 
 }  // namespace mjray

@@ -85,10 +85,10 @@ std::vector<std::string> check_outputs(const SceneDescription& scene, const Outp
   }
   // Folders named on the command line are made once every other check has passed.
   if (options.outdir) create_folder(*options.outdir, "cannot create the output folder '" + options.outdir->string() + "': ");
-  if (options.output && options.output->has_parent_path())
-    create_folder(options.output->parent_path(), "cannot write '" + options.output->string() + "': cannot create its folder '" +
-                                                     options.output->parent_path().string() + "': ");
-  if (options.output) check_image_output(*options.output, options.encoding);
+  if (options.output) {
+    create_folder_of(*options.output);
+    check_image_output(*options.output, options.encoding);
+  }
 
   std::vector<std::string> warnings;
   std::map<fs::path, size_t> first_writer;
@@ -120,6 +120,12 @@ void check_not_an_input(const SceneDescription& scene, const fs::path& output, c
     throw SceneError(where.to_string() + ": " + what + " would overwrite '" + output.string() + "', which is " + kind +
                      "; choose another output file");
   }
+}
+
+void create_folder_of(const fs::path& file) {
+  if (file.has_parent_path())
+    create_folder(file.parent_path(),
+                  "cannot write '" + file.string() + "': cannot create its folder '" + file.parent_path().string() + "': ");
 }
 
 }  // namespace mjray

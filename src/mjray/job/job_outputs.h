@@ -27,6 +27,10 @@ std::vector<std::string> check_outputs(const SceneDescription& scene, const Outp
 std::vector<std::string> check_outputs(const SceneDescription& scene, const OutputOptions& options,
                                        const std::vector<size_t>& jobs);
 
+/// Creates the folder of `file`, a file the command line names, if it is missing. Throws
+/// OutputError("cannot write 'FILE': cannot create its folder 'FOLDER': REASON").
+void create_folder_of(const std::filesystem::path& file);
+
 /// Throws SceneError("WHERE: WHAT would overwrite 'FILE', which the scene reads ...") when
 /// `output` is the script or one of scene.inputs (compared as canonical paths, so links and
 /// "../" spellings are caught). `what` names the writer ("gr.render", "--stats-json").

@@ -72,15 +72,18 @@ std::vector<std::array<float, kSize>> read_tuples(lua_State* L, int table, const
   return out;
 }
 
-/// One 0-based index of a corner, -1 when absent; checked against `count` entries.
+/// One 0-based index of a corner, -1 when absent; checked against `count` entries. Only an
+/// `optional` one (a uv or a normal) is said to take -1 or nil for none in messages.
 int32_t corner_index(lua_State* L, int value, size_t count, const char* fn, const std::string& where,
-                     const char* what) {
+                     const char* what, bool optional) {
   if (lua_isnil(L, value)) return -1;
   int is_integer = 0;
   const lua_Integer index = lua_tointegerx(L, value, &is_integer);
   if (!is_integer) fail(fn, where + " " + what + " must be a whole number (0-based), got " + describe(L, value));
   if (index == -1) return -1;
-  if (index < 0) fail(fn, where + " " + what + " index must be 0 or more (-1 or nil: none), got " + std::to_string(index));
+  if (index < 0)
+    fail(fn, where + " " + what + " index must be 0 or more" + (optional ? " (-1 or nil: none)" : "") + ", got " +
+                 std::to_string(index));
   if (index >= lua_Integer(count))
     fail(fn, where + " has " + what + " index " + std::to_string(index) +
                  (count ? " outside 0.." + std::to_string(count - 1) : std::string(", but the mesh has no ") + what + "s"));
@@ -91,7 +94,7 @@ int32_t corner_index(lua_State* L, int value, size_t count, const char* fn, cons
 MeshCorner read_corner(lua_State* L, const TriangleMesh& mesh, const char* fn, const std::string& where) {
   MeshCorner corner;
   if (lua_type(L, -1) != LUA_TTABLE) {
-    corner.position = corner_index(L, lua_gettop(L), mesh.positions.size(), fn, where, "position");
+    corner.position = corner_index(L, lua_gettop(L), mesh.positions.size(), fn, where, "position", false);
     if (corner.position < 0) fail(fn, where + " needs a position index");
     return corner;
   }
@@ -101,7 +104,7 @@ MeshCorner read_corner(lua_State* L, const TriangleMesh& mesh, const char* fn, c
   int32_t indices[3];
   for (int k = 0; k < 3; ++k) {
     lua_rawgeti(L, table, k + 1);
-    indices[k] = corner_index(L, lua_gettop(L), counts[k], fn, where, names[k]);
+    indices[k] = corner_index(L, lua_gettop(L), counts[k], fn, where, names[k], k > 0);
     lua_pop(L, 1);
   }
   if (indices[0] < 0) fail(fn, where + " needs a position index");

@@ -15,19 +15,25 @@ bool is_control_character(char c) {
   return code < 0x20 || code == 0x7f;
 }
 
-/// `text` as a message shows it: control characters as the Lua escapes that write them, so
-/// that none reaches the terminal raw.
+/// `text` as a message shows it: control characters and backslashes as the Lua escapes that
+/// write them (three digits, so that a digit after one is not read as part of it), so that
+/// none reaches the terminal raw and the text reads back as it was.
 std::string printable(std::string_view text) {
   std::string out;
   for (const char c : text) {
-    if (!is_control_character(c)) {
+    if (c == '\\') {
+      out += "\\\\";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (is_control_character(c)) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\%03u", unsigned(static_cast<unsigned char>(c)));
+      out += escape;
+    } else {
       out += c;
-      continue;
     }
-    out += '\\';
-    if (c == '\n') out += 'n';
-    else if (c == '\t') out += 't';
-    else out += std::to_string(static_cast<unsigned char>(c));
   }
   return out;
 }

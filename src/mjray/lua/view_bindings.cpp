@@ -60,7 +60,7 @@ int gr_background(lua_State* L) {
   const char* fn = "gr.background";
   Background background;
   if (lua_type(L, 1) == LUA_TSTRING) {
-    background.environment = environment_image(L, arg_string(L, 1, fn, "image file"));
+    background.environment = environment_image(L, arg_string(L, 1, fn, "environment image"));
   } else if (lua_type(L, 1) == LUA_TTABLE) {
     background.zenith = arg_color(L, 1, fn, "colour");
     background.horizon = lua_isnoneornil(L, 2) ? background.zenith : arg_color(L, 2, fn, "bottom colour");

@@ -43,7 +43,10 @@ RenderCheckpoint read_checkpoint(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw unreadable();
     data.assign(std::istreambuf_iterator<char>(in), {});
-  } catch (const std::ios_base::failure&) {  // a read error, such as a folder of that name
+    if (in.bad()) throw unreadable();
+  } catch (const std::ios_base::failure&) {
+    // A read error (a folder of that name opens, then fails to read) throws from the stream
+    // buffer in libstdc++, where other libraries set badbit.
     throw unreadable();
   }
   return decode_checkpoint(data, path);

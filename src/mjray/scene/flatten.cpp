@@ -114,22 +114,25 @@ class Flattener {
       const SceneNode& child = *(*level.children)[level.next_child++];
       enter(child, level.world_from_node * child.parent_from_node);  // computed before the stack grows
     }
-  }
-
-  /// After visit: one line for the nodes without a material past the first few named.
-  void finish() {
-    if (warnings_ && unmaterialled_.size() > kNamedUnmaterialled)
-      warnings_->push_back(std::to_string(unmaterialled_.size() - kNamedUnmaterialled) +
-                           " more nodes have no material; rendering them grey too");
+    warn_of_the_rest_without_material();
   }
 
  private:
   /// Nodes without a material that get a warning of their own; the rest are counted in one.
-  static constexpr size_t kNamedUnmaterialled = 3;
+  static constexpr size_t kNamedWithoutMaterial = 3;
+
+  /// After the walk: one line for the nodes without a material past those named.
+  void warn_of_the_rest_without_material() {
+    if (!warnings_ || nodes_without_material_.size() <= kNamedWithoutMaterial) return;
+    const size_t rest = nodes_without_material_.size() - kNamedWithoutMaterial;
+    warnings_->push_back(rest == 1 ? std::string("1 more node has no material; rendering it grey too")
+                                   : std::to_string(rest) + " more nodes have no material; rendering them grey too");
+  }
 
   uint32_t material_index(const SceneNode& node) {
     const Material* key = node.material.get();
-    if (!key && unmaterialled_.insert(&node).second && warnings_ && unmaterialled_.size() <= kNamedUnmaterialled)
+    if (!key && nodes_without_material_.insert(&node).second && warnings_ &&
+        nodes_without_material_.size() <= kNamedWithoutMaterial)
       warnings_->push_back(node.where.to_string() + ": '" + node.name + "' has no material; rendering it grey");
     auto [it, inserted] = material_ids_.try_emplace(key, uint32_t(world_.materials.size()));
     if (inserted) world_.materials.push_back(key ? *key : default_material());
@@ -184,7 +187,7 @@ class Flattener {
   World& world_;
   std::vector<std::string>* warnings_;
   std::map<const Material*, uint32_t> material_ids_;
-  std::set<const SceneNode*> unmaterialled_;
+  std::set<const SceneNode*> nodes_without_material_;
 };
 
 /// Flags the primitives whose material lets shadow rays through (none: no flags at all).
@@ -222,9 +225,7 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   // Each shape's entries are large: grown by doubling they would be copied and faulted in twice.
   world.shapes.reserve(size_t(expanded.shapes));
   world.primitives.shapes.reserve(size_t(expanded.shapes));
-  Flattener flattener(world, warnings);
-  flattener.visit(*job.root, graph);
-  flattener.finish();
+  Flattener(world, warnings).visit(*job.root, graph);
   mark_transmissive(world);
   return world;
 }

@@ -23,9 +23,9 @@ DensityQuery query_for(int neighbours, const Bounds3& box, float radius_share) {
   return {neighbours, box.empty() ? 0.f : std::max(length(box.diagonal()) * radius_share, 1e-6f)};
 }
 
-/// What a map takes per photon it holds at its peak, when its chunks' lists are joined into
-/// one (each list up to twice its size, and the joined copy): 67 bytes were measured with the
-/// irradiance samples of --gi 1e6 on scenes/features/global_illumination.lua.
+/// An upper bound of what a map takes per photon it holds at its peak, when its chunks' lists
+/// are joined into one (each list up to twice its size, and the joined copy): 67 bytes were
+/// measured with the irradiance samples of --gi 1e6 on scenes/features/global_illumination.lua.
 constexpr uint64_t kPeakBytesPerPhoton = 3 * sizeof(Photon);
 
 /// An amount of memory for messages: "27.8 GiB", or "512 MiB" below a GiB.
