@@ -110,7 +110,12 @@ int main(int argc, char** argv) {
     for (const auto& e : errors) print_error(e);
     return 1;
   }
-  const JobOptions options = job_options(cl);
+  // The ranks on one host make the same photon maps at once: each may take its share of the memory.
+  const JobOptions options = [&] {
+    JobOptions o = job_options(cl);
+    o.photons.processes_sharing_memory = world.ranks_on_host();
+    return o;
+  }();
   const JobFingerprints fingerprints(scene, options);
   if (const std::string verdict = agree_on_scene(world, all_fingerprints(fingerprints, scene.jobs.size()), ranks);
       !verdict.empty()) {

@@ -1,5 +1,6 @@
 // mjray-mpi under mpirun: the same bytes as mjray for 1, 2 and 3 ranks (a corpus scene, an
-// anti-aliased glass scene, a 6-frame animation, photon maps), a rank that cannot read a mesh ends the job
+// anti-aliased glass scene, a 6-frame animation, photon maps, each rank's share of the memory
+// for them), a rank that cannot read a mesh ends the job
 // with one message and no image, SIGINT writes the partial image and --resume finishes it to
 // the same bytes, and the statistics come from rank 0 with one entry per rank. Skipped when
 // Open MPI was absent at configure time (scripts/setup.sh installs it).
@@ -184,6 +185,24 @@ TEST_F(MpiRender, PhotonMapsAreTheSameBytesForOneAndTwoRanks) {
                   log), 0) << read_file(log);
     EXPECT_EQ(read_file(out), reference) << ranks << " ranks";
   }
+}
+
+TEST_F(MpiRender, RanksOnOneHostEachTakeTheirShareOfItsMemoryForPhotonMaps) {
+  // Inside a closed matte room every photon is stored, a few times over: a billion of them
+  // would need more memory than a machine has. The message names each rank's share.
+  const auto scene = write_file(dir_ / "room.lua",
+                                "local root = gr.node('root')\n"
+                                "local room = gr.nh_sphere('room', {0, 0, 0}, 50)\n"
+                                "room:set_material(gr.material({0.7, 0.7, 0.7}, {0, 0, 0}, 1))\n"
+                                "root:add_child(room)\n"
+                                "gr.render(root, 'room.png', 32, 32, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60, {0.2, 0.2, 0.2},\n"
+                                "          {gr.light({0, 10, 0}, {0.8, 0.8, 0.8}, {1, 0, 0})})\n");
+  const auto log = dir_ / "log.txt";
+  EXPECT_EQ(run(plus(mpirun(2), {"-j", "1", "--gi", "1e9", scene.string()}), log), 1);
+  const std::string text = read_file(log);
+  EXPECT_NE(text.find("mjray: error: --gi 1000000000: the photon map would hold about "), std::string::npos) << text;
+  EXPECT_NE(text.find(" available to each of the 2 processes on this machine (of "), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "room.png"));
 }
 
 TEST_F(MpiRender, CorpusSceneIsTheSameBytesForOneTwoAndThreeRanks) {

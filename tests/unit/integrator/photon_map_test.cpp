@@ -276,5 +276,29 @@ TEST(PhotonMaps, AMapThatWouldNotFitSaysWhichOptionAndHowMuchMemory) {
   }
 }
 
+TEST(PhotonMaps, ProcessesOnOneMachineEachTakeTheirShareOfItsMemory) {
+  const World world = photon_world();
+  const BruteForce accel(world.primitives);
+  PhotonSettings settings;
+  settings.global_photons = 4 * kPilotPhotons;
+  settings.memory_budget_bytes = uint64_t(64) << 20;
+  const PhotonMaps alone(world, accel, settings, 5, 2);
+  const uint64_t held = alone.global().size();
+  ASSERT_GT(held, 0u);
+  // Enough processes that each share holds half of the map's photons: refused, saying so.
+  settings.processes_sharing_memory = int(settings.memory_budget_bytes / (held * sizeof(Photon) / 2));
+  ASSERT_GT(settings.processes_sharing_memory, 1);
+  try {
+    const PhotonMaps shared(world, accel, settings, 5, 2);
+    FAIL() << "a map of " << held << " photons fitted in 1/" << settings.processes_sharing_memory << " of 64 MiB";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(" available to each of the " + std::to_string(settings.processes_sharing_memory) +
+                           " processes on this machine (of 64 MiB); ask for fewer photons"),
+              std::string::npos)
+        << message;
+  }
+}
+
 }  // namespace
 }  // namespace mjray

@@ -43,6 +43,13 @@ std::string rounded_count(uint64_t count) {
   return std::to_string((count + 500'000) / 1'000'000) + " million";
 }
 
+/// How the budget was shared: " to each of the 4 processes on this machine (of 23.1 GiB)".
+std::string share_text(uint64_t machine_bytes, int processes) {
+  if (processes == 1) return "";
+  return " to each of the " + std::to_string(processes) + " processes on this machine (of " +
+         memory_text(double(machine_bytes)) + ")";
+}
+
 /// The box around the balls photons are aimed at.
 Bounds3 bounds_of(const std::vector<BoundingSphere>& balls) {
   Bounds3 box;
@@ -61,7 +68,9 @@ PhotonMaps::PhotonMaps(const World& world, const Accelerator& accel, const Photo
   const auto build_map = [&](const PhotonSource& source, PhotonPaths paths, uint64_t count) {
     auto start = Clock::now();
     // Read when each map is made, so that the caustic map counts against the global one.
-    const uint64_t budget = settings.memory_budget_bytes ? settings.memory_budget_bytes : available_memory_bytes();
+    const uint64_t machine = settings.memory_budget_bytes ? settings.memory_budget_bytes : available_memory_bytes();
+    const int sharing = std::max(1, settings.processes_sharing_memory);
+    const uint64_t budget = machine / uint64_t(sharing);
     TracedPhotons traced;
     try {
       traced = trace_photons(world, accel, source, paths, count, seed, threads,
@@ -71,7 +80,8 @@ PhotonMaps::PhotonMaps(const World& world, const Accelerator& accel, const Photo
       throw SceneError(option + std::to_string(count) + ": the photon map would hold about " +
                        rounded_count(e.expected_photons()) + " photons and need about " +
                        memory_text(double(e.expected_photons() * kPeakBytesPerPhoton)) + " of memory, more than the " +
-                       memory_text(double(budget)) + " available; ask for fewer photons");
+                       memory_text(double(budget)) + " available" + share_text(machine, sharing) +
+                       "; ask for fewer photons");
     }
     statistics_.seconds_trace += seconds_since(start);
     statistics_.rays += traced.rays;

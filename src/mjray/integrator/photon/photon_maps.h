@@ -16,8 +16,8 @@ namespace mjray {
 /// The caustic map (--caustics), the global map (--gi) and the irradiance precomputed at
 /// every irradiance_stride-th global photon (Christensen's final-gather acceleration), each
 /// in a kd-tree. Identical for any number of threads. A map that would not fit in the memory
-/// available (or settings.memory_budget_bytes) is refused with a SceneError after its first
-/// photons, before the rest fill the memory.
+/// available (or settings.memory_budget_bytes), shared among settings.processes_sharing_memory,
+/// is refused with a SceneError after its first photons, before the rest fill the memory.
 class PhotonMaps {
  public:
   PhotonMaps(const World& world, const Accelerator& accel, const PhotonSettings& settings, uint64_t seed, int threads);

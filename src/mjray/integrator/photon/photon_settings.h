@@ -19,6 +19,9 @@ struct PhotonSettings {
   float global_radius_share = 0.05f;
   /// The memory a map may take while it is made; 0: what the machine has available then.
   uint64_t memory_budget_bytes = 0;
+  /// Processes on this machine that make the same maps at once (mjray-mpi's ranks on one
+  /// host): each may take this share of the budget.
+  int processes_sharing_memory = 1;
 
   bool caustics() const { return caustic_photons > 0; }
   bool global_illumination() const { return global_photons > 0; }
