@@ -33,15 +33,21 @@ bool is_obj_keyword(std::string_view keyword) {
 // except to grow the output vectors, and never throws unless the input is malformed. Reserving
 // from a pre-count of line prefixes was measured slower (a second pass over the text costs more
 // than the amortised vector growth).
+// A file is fed in pieces of whole statements (see statements_end), so that reading it needs no
+// buffer the size of the file.
 class ObjParser {
  public:
-  ObjParser(std::string_view text, const std::string& source_name, ObjSummary* summary)
-      : p_(text.data()), end_(text.data() + text.size()), source_name_(source_name), summary_(summary) {}
+  ObjParser(const std::string& source_name, ObjSummary* summary) : source_name_(source_name), summary_(summary) {}
 
-  TriangleMesh parse() {
+  /// Parses `text`, which holds whole statements and follows the text fed before.
+  void feed(std::string_view text) {
+    if (text.empty()) return;
+    p_ = text.data();
+    end_ = text.data() + text.size();
     // Skip a UTF-8 byte-order mark, which would otherwise hide the first statement.
     constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
-    if (std::string_view(p_, static_cast<size_t>(end_ - p_)).starts_with(kUtf8Bom)) p_ += 3;
+    if (!fed_ && text.starts_with(kUtf8Bom)) p_ += 3;
+    fed_ = true;
     while (true) {
       skip_blanks();
       if (p_ == end_) break;
@@ -71,8 +77,9 @@ class ObjParser {
         skip_statement();
       }
     }
-    return std::move(mesh_);
   }
+
+  TriangleMesh finish() { return std::move(mesh_); }
 
  private:
   // Spaces, tabs, and a backslash that continues the statement on the next line.
@@ -277,18 +284,36 @@ class ObjParser {
                      problem);
   }
 
-  const char* p_;
-  const char* end_;
+  const char* p_ = nullptr;
+  const char* end_ = nullptr;
+  bool fed_ = false;
   const std::string& source_name_;
   size_t line_ = 1;
   TriangleMesh mesh_;
   ObjSummary* summary_;
 };
 
+/// The length of the longest start of `text` that ends a statement: after its last line end that
+/// no backslash continues. A "\r" last in `text` may be the first half of a "\r\n", so it is not
+/// taken. 0 when `text` holds no whole statement.
+size_t statements_end(std::string_view text) {
+  for (size_t i = text.size(); i-- > 0;) {
+    const bool line_end = text[i] == '\n' || (text[i] == '\r' && i + 1 < text.size() && text[i + 1] != '\n');
+    if (!line_end) continue;
+    size_t before = i;
+    if (text[i] == '\n' && before > 0 && text[before - 1] == '\r') --before;
+    while (before > 0 && is_blank(text[before - 1])) --before;
+    if (before == 0 || text[before - 1] != '\\') return i + 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 TriangleMesh parse_obj(std::string_view text, const std::string& source_name, ObjSummary* summary) {
-  return ObjParser(text, source_name, summary).parse();
+  ObjParser parser(source_name, summary);
+  parser.feed(text);
+  return parser.finish();
 }
 
 std::string check_obj_content(const TriangleMesh& mesh, const ObjSummary& summary, const std::string& name) {
@@ -305,7 +330,7 @@ std::string check_obj_content(const TriangleMesh& mesh, const ObjSummary& summar
          " statements are not OBJ" + stranger;
 }
 
-TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary) {
+TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary, size_t piece_bytes) {
   const std::string name = path.string();
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
@@ -314,22 +339,26 @@ TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary) {
                      std::string("cannot open OBJ file: ") + std::strerror(errno));
   }
 
-  // Read the whole file with one call when its size is known; grow only if it grew meanwhile.
-  std::error_code size_error;
-  const auto size_hint = std::filesystem::file_size(path, size_error);
-  std::string text(size_error ? size_t{1} << 16 : static_cast<size_t>(size_hint) + 1, '\0');
-  size_t size = 0;
+  // Read in pieces, each parsed while it is in the cache: a buffer the size of the file would
+  // cost as much again in fresh memory, which is slow to fault in. A line longer than the
+  // buffer grows it.
+  ObjParser parser(name, summary);
+  std::string buffer(std::max<size_t>(piece_bytes, 1), '\0');
+  size_t held = 0;  // the start of a statement the last piece did not finish
   while (true) {
-    size += std::fread(text.data() + size, 1, text.size() - size, file.get());
-    if (size < text.size()) break;
-    text.resize(text.size() * 2);
+    if (held == buffer.size()) buffer.resize(2 * buffer.size());
+    const size_t read = std::fread(buffer.data() + held, 1, buffer.size() - held, file.get());
+    if (std::ferror(file.get())) {
+      throw SceneError(FileLocation{name, 0}, std::string("cannot read OBJ file: ") + std::strerror(errno));
+    }
+    const bool at_end = held + read < buffer.size();
+    const std::string_view text(buffer.data(), held + read);
+    const size_t parsed = at_end ? text.size() : statements_end(text);
+    parser.feed(text.substr(0, parsed));
+    held = text.size() - parsed;
+    std::memmove(buffer.data(), buffer.data() + parsed, held);
+    if (at_end) return parser.finish();
   }
-  if (std::ferror(file.get())) {
-    throw SceneError(FileLocation{name, 0},
-                     std::string("cannot read OBJ file: ") + std::strerror(errno));
-  }
-  text.resize(size);
-  return parse_obj(text, name, summary);
 }
 
 }  // namespace mjray

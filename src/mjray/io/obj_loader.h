@@ -18,10 +18,15 @@ struct ObjSummary {
   int first_unknown_line = 0;
 };
 
+/// The bytes load_obj reads and parses at a time.
+inline constexpr size_t kObjPieceBytes = size_t(1) << 20;
+
 /// Reads an OBJ file; throws SceneError naming file and line for malformed input, and a
 /// SceneError naming the file when it cannot be opened. `v x y z` (a 4th `w` is ignored),
-/// `vn` as written (not normalised), `vt u v` (a 3rd component is ignored).
-TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary = nullptr);
+/// `vn` as written (not normalised), `vt u v` (a 3rd component is ignored). The file is read
+/// `piece_bytes` at a time, and the same mesh comes of any size.
+TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary = nullptr,
+                      size_t piece_bytes = kObjPieceBytes);
 
 /// Parses OBJ text; `source_name` is used in error messages.
 TriangleMesh parse_obj(std::string_view text, const std::string& source_name, ObjSummary* summary = nullptr);

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -335,6 +336,45 @@ TEST(ObjLoader, LoadsAFileAndNamesItInErrors) {
   write_file(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 4\n");
   EXPECT_EQ(load_error(dir / "bad.obj"),
             (dir / "bad.obj").string() + ":4: face index 4 out of range (3 positions)");
+}
+
+TEST(ObjLoader, AFileReadInPiecesOfAnySizeGivesTheMeshAndLinesOfTheWholeText) {
+  // Every kind of line end, continued statements, a comment ending in a backslash, a line
+  // longer than most pieces and a byte-order mark: each may fall on a piece's edge.
+  std::string text = "\xEF\xBB\xBFv 0 0 0\r\nv 1 0 0\rv 1 1 0\nv 0 1 \\\r\n  0.5\n# a comment \\\n";
+  text += "vt 0.25 0.75\r\nvn 0 0 1\rf 1/1/1 2/1/1 \\ \n 3/1/1 4/1/1\r\n\n\n";
+  for (int i = 0; i < 40; ++i) text += "v " + std::to_string(i) + " 2 3\r\nf -1 \\\r\n-2 -3\n";
+  text += "# " + std::string(300, 'x') + "\n";
+  const TriangleMesh whole = parse_obj(text, "t.obj");
+  ASSERT_EQ(whole.positions.size(), 44u);
+  ASSERT_EQ(whole.triangles.size(), 42u);
+  const std::string bad = text + "v 1 2 3\nf 1 2 x\n";
+  const std::string bad_error = parse_error(bad, "t.obj");
+  ASSERT_EQ(bad_error, "t.obj:135: bad face corner 'x'");
+
+  const auto dir = test::make_temp_dir("obj-pieces");
+  write_file(dir / "t.obj", text);
+  write_file(dir / "bad.obj", bad);
+  for (const size_t piece : {size_t(1), size_t(2), size_t(3), size_t(5), size_t(7), size_t(16), size_t(33), size_t(64),
+                             size_t(301), size_t(1000), kObjPieceBytes}) {
+    ObjSummary summary;
+    const TriangleMesh mesh = load_obj(dir / "t.obj", &summary, piece);
+    ASSERT_EQ(mesh.positions.size(), whole.positions.size()) << piece;
+    for (size_t i = 0; i < mesh.positions.size(); ++i) EXPECT_EQ(xyz(mesh.positions[i]), xyz(whole.positions[i])) << piece;
+    EXPECT_EQ(triangles_of(mesh), triangles_of(whole)) << piece;
+    EXPECT_EQ(mesh.uvs.size(), 1u) << piece;
+    EXPECT_EQ(mesh.normals.size(), 1u) << piece;
+    EXPECT_EQ(mesh.polygon_count, whole.polygon_count) << piece;
+    EXPECT_EQ(summary.statements, 87u) << piece;
+    EXPECT_EQ(summary.unknown_statements, 0u) << piece;
+    try {
+      load_obj(dir / "bad.obj", nullptr, piece);
+      ADD_FAILURE() << piece;
+    } catch (const SceneError& e) {
+      EXPECT_EQ(std::string(e.what()), (dir / "bad.obj").string() + bad_error.substr(5)) << piece;
+    }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // --- the shared test meshes (../shared/models, facts from SOURCES.md) -----------------------
