@@ -170,17 +170,23 @@ class Flattener {
     out.normals.reserve(mesh.normals.size());
     for (const Normal3& n : mesh.normals) out.normals.push_back(world_from_object(n));
     out.uvs = mesh.uvs;
-    out.corners = mesh.triangles;
+    out.triangle_count = uint32_t(mesh.triangles.size());
     // A mirroring transform reverses the winding; swap two corners to keep normals outward.
-    if (determinant3(world_from_object.matrix()) < 0)
-      for (auto& tri : out.corners) std::swap(tri[1], tri[2]);
+    const bool mirrored = determinant3(world_from_object.matrix()) < 0;
+    if (!mesh.normals.empty() || !mesh.uvs.empty()) {
+      out.corners = mesh.triangles;
+      if (mirrored)
+        for (auto& tri : out.corners) std::swap(tri[1], tri[2]);
+    }
     out.world_from_object = world_from_object;
     out.material = material;
 
-    prims.triangles.reserve(prims.triangles.size() + out.corners.size());
-    for (const auto& c : out.corners)
-      prims.triangles.push_back({out.first_vertex + uint32_t(c[0].position), out.first_vertex + uint32_t(c[1].position),
-                                 out.first_vertex + uint32_t(c[2].position)});
+    prims.triangles.reserve(prims.triangles.size() + mesh.triangles.size());
+    for (const auto& c : mesh.triangles) {
+      const uint32_t second = uint32_t(c[mirrored ? 2 : 1].position), third = uint32_t(c[mirrored ? 1 : 2].position);
+      prims.triangles.push_back(
+          {out.first_vertex + uint32_t(c[0].position), out.first_vertex + second, out.first_vertex + third});
+    }
     world_.meshes.push_back(std::move(out));
   }
 
@@ -199,7 +205,7 @@ void mark_transmissive(World& world) {
   PrimitiveSet& prims = world.primitives;
   prims.transmissive_flags.assign(prims.size(), 0);
   for (const WorldMesh& mesh : world.meshes)
-    std::fill_n(prims.transmissive_flags.begin() + mesh.first_triangle, mesh.corners.size(), by_material[mesh.material]);
+    std::fill_n(prims.transmissive_flags.begin() + mesh.first_triangle, mesh.triangle_count, by_material[mesh.material]);
   for (size_t s = 0; s < world.shapes.size(); ++s)
     prims.transmissive_flags[prims.triangles.size() + s] = by_material[world.shapes[s].material];
 }

@@ -20,10 +20,13 @@ namespace mjray {
 /// The shading data of one mesh instance; its positions are in World::primitives.
 struct WorldMesh {
   uint32_t first_triangle = 0;     ///< its triangles are primitives first_triangle + face
+  uint32_t triangle_count = 0;
   uint32_t first_vertex = 0;       ///< its positions start here in primitives.vertices
   std::vector<Normal3> normals;    ///< world space, not normalised
   std::vector<Point2> uvs;
-  std::vector<std::array<MeshCorner, 3>> corners;  ///< per face, indices local to the mesh
+  /// Per face, indices local to the mesh. Empty when the mesh has neither normals nor texture
+  /// coordinates: there is nothing to interpolate, and a large scanned mesh saves a copy.
+  std::vector<std::array<MeshCorner, 3>> corners;
   Transform world_from_object;     ///< for object-space (solid) texturing
   uint32_t material = 0;
 };

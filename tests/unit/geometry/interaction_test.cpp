@@ -72,6 +72,32 @@ TEST(Interaction, NormalsFollowNonUniformScaleAndMirroring) {
   EXPECT_NEAR(si.shading_normal.z, n1.z, 1e-6f);
 }
 
+TEST(Interaction, AMeshOfPositionsOnlyKeepsNoCornersAndShadesWithItsFaceNormal) {
+  // Two triangles, the second in a mirroring placement: its winding is swapped like the
+  // corners of a mesh with normals, so both face +z.
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.triangles = {{MeshCorner{0}, MeshCorner{1}, MeshCorner{2}}};
+  RenderJob job;
+  job.root = test::group({test::mesh(m, textured_material()), test::mesh(m, textured_material(), Transform::scale(-2, 1, 1))});
+  const World world = flatten(job);
+  ASSERT_EQ(world.meshes.size(), 2u);
+  for (uint32_t t = 0; t < 2; ++t) {
+    const WorldMesh& mesh = world.meshes[t];
+    EXPECT_EQ(mesh.first_triangle, t);
+    EXPECT_EQ(mesh.triangle_count, 1u);
+    EXPECT_TRUE(mesh.corners.empty());
+    const SurfaceInteraction si = world.interaction({{-0.1f, 0.1f, 5}, {0, 0, -1}}, Hit{5, t, 0.25f, 0.5f});
+    EXPECT_EQ(si.geometric_normal, Normal3(0, 0, 1)) << t;
+    EXPECT_EQ(si.shading_normal, si.geometric_normal) << t;
+    EXPECT_EQ(si.uv, (Point2{})) << t;
+  }
+  const auto [p0, p1, p2] = world.primitives.triangle_vertices(1);
+  EXPECT_EQ(p0, Point3(0, 0, 0));
+  EXPECT_EQ(p1, Point3(0, 1, 0));  // the corners (1, 0, 0) and (0, 1, 0) in swapped order
+  EXPECT_EQ(p2, Point3(-2, 0, 0));
+}
+
 TEST(Interaction, CubeFacesMapRightAndUpAsSeenFromOutsideToUv) {
   EXPECT_EQ(unit_cube_uv({1, 0.25f, 0.75f}), (Point2{0.25f, 0.25f}));  // +x face: right is −z, up +y
   EXPECT_EQ(unit_cube_uv({0, 0.25f, 0.75f}), (Point2{0.75f, 0.25f}));  // −x face: right is +z

@@ -68,7 +68,7 @@ std::vector<BoundingSphere> specular_targets(const World& world) {
   Bounds3 all;
   for (const WorldMesh& mesh : world.meshes) {
     if (!specular(world.materials[mesh.material])) continue;
-    const uint32_t end = mesh.first_triangle + uint32_t(mesh.corners.size());
+    const uint32_t end = mesh.first_triangle + mesh.triangle_count;
     Bounds3 box;
     for (uint32_t t = mesh.first_triangle; t < end; ++t) box.expand(world.primitives.primitive_bounds(t));
     all.expand(box);
