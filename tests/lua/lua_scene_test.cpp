@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "mjray/io/file_hash.h"
 #include "mjray/lua/scene_loader.h"
 #include "support/lua_script_test.h"
 #include "support/scratch_files.h"
@@ -201,6 +202,24 @@ TEST_F(LuaScene, MeshIsFoundInAParentsAssetsFolderButTheScriptsFolderComesFirst)
   ASSERT_EQ(children.size(), 2u);
   EXPECT_EQ(text(children[0]->mesh->positions[0]), "(0 0 0)");
   EXPECT_EQ(text(children[1]->mesh->positions[0]), "(7 7 7)");
+}
+
+TEST_F(LuaScene, InputsAreHashedWhileTheScriptRunsAsTheyWouldBeAfter) {
+  write("a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write("b.obj", "v 0 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\n");
+  const auto script = write("scene.lua",
+                            "root = gr.node('root')\n"
+                            "root:add_child(gr.mesh('a', 'a.obj'))\n"
+                            "root:add_child(gr.mesh('b', 'b.obj'))\n"
+                            "root:add_child(gr.mesh('again', 'a.obj'))\n" +
+                                render_call());
+  const auto scene = load_scene(script, {});
+  ASSERT_EQ(scene.input_hashes.size(), 2u);
+  for (const auto& input : scene.inputs) {
+    ASSERT_EQ(scene.input_hashes.count(input), 1u) << input;
+    EXPECT_EQ(scene.input_hashes.at(input), file_hash(input)) << input;
+  }
+  EXPECT_NE(file_hash(scene.inputs[0]), file_hash(scene.inputs[1]));
 }
 
 TEST_F(LuaScene, MaterialIsSharedByTheNodesThatUseIt) {

@@ -1,5 +1,6 @@
 #include "mjray/job/job_fingerprint.h"
 
+#include "mjray/io/file_hash.h"
 #include "mjray/job/job_view.h"
 
 #include <charconv>
@@ -11,21 +12,6 @@
 namespace mjray {
 
 namespace {
-
-/// FNV-1a over a file's bytes, as hex; "missing" when it cannot be read.
-std::string file_hash(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "missing";
-  uint64_t hash = 0xcbf29ce484222325ULL;
-  char buffer[1 << 16];
-  while (in) {
-    in.read(buffer, sizeof buffer);
-    for (std::streamsize i = 0; i < in.gcount(); ++i) hash = (hash ^ static_cast<unsigned char>(buffer[i])) * 0x100000001b3ULL;
-  }
-  char text[20];
-  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
-  return text;
-}
 
 std::string number(double value) {
   char text[32];
@@ -55,7 +41,10 @@ std::map<std::string, std::string> lines_of(const std::string& text) {
 JobFingerprints::JobFingerprints(const SceneDescription& scene, const JobOptions& options)
     : scene_(scene), options_(options) {
   inputs_ = "scene " + scene.script.filename().string() + "=" + file_hash(scene.script) + "\n";
-  for (const auto& input : scene.inputs) inputs_ += "file " + input.string() + "=" + file_hash(input) + "\n";
+  for (const auto& input : scene.inputs) {
+    const auto known = scene.input_hashes.find(input);
+    inputs_ += "file " + input.string() + "=" + (known != scene.input_hashes.end() ? known->second : file_hash(input)) + "\n";
+  }
   for (const auto& [name, value] : scene.defines) inputs_ += "-D " + name + "=" + value + "\n";
 }
 

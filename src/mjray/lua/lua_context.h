@@ -15,6 +15,7 @@ extern "C" {
 }
 
 #include "mjray/core/error.h"
+#include "mjray/io/file_hash.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/scene/scene_description.h"
 
@@ -88,6 +89,7 @@ struct LoaderContext {
   std::optional<bool> post_multiply;
   SceneDescription* description = nullptr;
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache;
+  BackgroundFileHashes input_hashes;  ///< of description->inputs, for the resume fingerprints
   std::vector<std::weak_ptr<LuaNode>> nodes;  ///< every node made, to break cycles at the end
   std::set<std::string> warned;  ///< warnings given, so that a loop gives each once
   /// gr.lens's and gr.background's, for the gr.render calls after them.

@@ -56,6 +56,7 @@ FileLocation caller_location(lua_State* L) {
 void record_input(lua_State* L, const std::filesystem::path& path) {
   LoaderContext& ctx = context(L);
   ctx.description->inputs.push_back(path);
+  ctx.input_hashes.add(path);
   if (ctx.options.inputs_read) ctx.options.inputs_read->push_back(path);
 }
 
@@ -310,6 +311,7 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
     throw SceneError(message ? message : script.string() + ": the script raised an error that is not a string");
   }
   if (description.jobs.empty()) throw SceneError(script.string() + ": the scene never calls gr.render");
+  description.input_hashes = ctx.input_hashes.wait();
   return description;
 }
 

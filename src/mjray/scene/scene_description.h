@@ -3,6 +3,7 @@
 /// Built by lua/, turned into a flat World by flatten().
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,6 +59,9 @@ struct SceneDescription {
   /// Every file the script read (meshes, textures, modules, files it opened), as resolved;
   /// outputs must not overwrite them.
   std::vector<std::filesystem::path> inputs;
+  /// file_hash of the inputs, computed while the script ran; an input missing here is hashed
+  /// when its hash is needed.
+  std::map<std::filesystem::path, std::string> input_hashes;
   /// The globals -D set before the script ran (name, value as given): they shape every job.
   std::vector<std::pair<std::string, std::string>> defines;
 };

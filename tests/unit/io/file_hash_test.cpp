@@ -1,0 +1,70 @@
+// File hashes for resume fingerprints, and the thread that computes them while a script runs.
+
+#include "mjray/io/file_hash.h"
+
+#include <gtest/gtest.h>
+
+#include "support/scratch_files.h"
+#include "support/test_paths.h"
+
+namespace mjray {
+namespace {
+
+/// The file `dir`/f<i>.
+std::filesystem::path numbered(const std::filesystem::path& dir, int i) {
+  std::string name = "f";
+  name += std::to_string(i);
+  return dir / name;
+}
+
+TEST(FileHash, IsFnv1aOfTheBytesOrSaysTheFileIsMissing) {
+  const auto dir = test::make_temp_dir("file-hash");
+  test::write_file(dir / "empty", "");
+  test::write_file(dir / "a", "a");
+  test::write_file(dir / "foobar", "foobar");
+  // FNV-1a 64's published values for "", "a" and "foobar".
+  EXPECT_EQ(file_hash(dir / "empty"), "cbf29ce484222325");
+  EXPECT_EQ(file_hash(dir / "a"), "af63dc4c8601ec8c");
+  EXPECT_EQ(file_hash(dir / "foobar"), "85944171f73967e8");
+  EXPECT_EQ(file_hash(dir / "none"), "missing");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BackgroundFileHashes, GivesFileHashOfEachRegularFileAddedOnce) {
+  const auto dir = test::make_temp_dir("background-hash");
+  std::vector<std::filesystem::path> files;
+  for (int i = 0; i < 20; ++i) {
+    files.push_back(numbered(dir, i));
+    test::write_file(files.back(), std::string(size_t(i) * 1000, char('a' + i)));
+  }
+  BackgroundFileHashes hashes;
+  for (const auto& f : files) hashes.add(f);
+  hashes.add(files[3]);                // again
+  hashes.add(dir / "missing");         // not a regular file: left out
+  hashes.add(dir);                     // a folder: left out
+  const auto result = hashes.wait();
+  ASSERT_EQ(result.size(), files.size());
+  for (const auto& f : files) EXPECT_EQ(result.at(f), file_hash(f)) << f;
+  // Adding after a wait is hashed too.
+  test::write_file(dir / "late", "late");
+  hashes.add(dir / "late");
+  EXPECT_EQ(hashes.wait().at(dir / "late"), file_hash(dir / "late"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BackgroundFileHashes, StopsWithoutWaitingForTheQueue) {
+  const auto dir = test::make_temp_dir("background-hash-stop");
+  test::write_file(dir / "big", std::string(size_t(4) << 20, 'x'));
+  {
+    BackgroundFileHashes hashes;
+    for (int i = 0; i < 1000; ++i) hashes.add(dir / "big");  // one file, queued once
+    for (int i = 0; i < 50; ++i) {
+      test::write_file(numbered(dir, i), "x");
+      hashes.add(numbered(dir, i));
+    }
+  }  // destroyed at once: the test ends rather than hangs
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mjray
