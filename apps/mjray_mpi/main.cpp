@@ -21,6 +21,7 @@
 #include "mpi_world.h"
 #include "rank_failed.h"
 #include "worker.h"
+#include "mjray/core/available_memory.h"
 #include "mjray/core/error.h"
 #include "mjray/core/large_page_heap.h"
 #include "mjray/job/job_outputs.h"
@@ -71,6 +72,8 @@ int main(int argc, char** argv) {
   back_heap_with_large_pages(size_t(256) << 20);
   std::signal(SIGXFSZ, SIG_IGN);
   MpiWorld world(argc, argv);
+  // Read before any rank on this host has loaded a scene or made a photon map.
+  const uint64_t memory_at_start = machine_available_bytes();
   const bool root = world.rank() == 0;
 
   // Compute the command line: the driver's own option, then mjray's.
@@ -110,10 +113,12 @@ int main(int argc, char** argv) {
     for (const auto& e : errors) print_error(e);
     return 1;
   }
-  // The ranks on one host make the same photon maps at once: each may take its share of the memory.
+  // The ranks on one host make photon maps at the same time: each may hold its share of what
+  // the host had available when they started.
   const JobOptions options = [&] {
     JobOptions o = job_options(cl);
     o.photons.processes_sharing_memory = world.ranks_on_host();
+    o.photons.memory_at_start_bytes = memory_at_start;
     return o;
   }();
   const JobFingerprints fingerprints(scene, options);

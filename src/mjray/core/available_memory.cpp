@@ -59,11 +59,18 @@ uint64_t cgroup_room() {
 
 }  // namespace
 
-uint64_t available_memory_bytes() {
+uint64_t machine_available_bytes() {
   uint64_t available = 0;
-  for (const uint64_t room : {proc_kilobytes("/proc/meminfo", "MemAvailable:"), address_space_room(), cgroup_room()})
+  for (const uint64_t room : {proc_kilobytes("/proc/meminfo", "MemAvailable:"), cgroup_room()})
     if (room > 0) available = available == 0 ? room : std::min(available, room);
   return available;
 }
+
+uint64_t available_memory_bytes() {
+  const uint64_t machine = machine_available_bytes(), own = address_space_room();
+  return machine == 0 || own == 0 ? std::max(machine, own) : std::min(machine, own);
+}
+
+uint64_t resident_bytes() { return proc_kilobytes("/proc/self/status", "VmRSS:"); }
 
 }  // namespace mjray

@@ -11,4 +11,11 @@ namespace mjray {
 /// 0 when unknown.
 uint64_t available_memory_bytes();
 
+/// The same without the address-space limit, which is each process's own: what processes
+/// started together on this machine share. 0 when unknown.
+uint64_t machine_available_bytes();
+
+/// The memory this process holds now (VmRSS); 0 when unknown.
+uint64_t resident_bytes();
+
 }  // namespace mjray

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -30,6 +31,27 @@ TEST(AvailableMemory, IsSomeOfTheMachinesMemory) {
   const uint64_t available = available_memory_bytes();
   EXPECT_GT(available, 0u);
   EXPECT_LE(available, memory_total());
+}
+
+TEST(AvailableMemory, TheMachinesLeavesOutOnlyThisProcesssOwnLimit) {
+  const uint64_t machine = machine_available_bytes();
+  EXPECT_GT(machine, 0u);
+  EXPECT_LE(machine, memory_total());
+  // Without ulimit -v the two read the same files; each read may differ a little.
+  rlimit limit{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &limit), 0);
+  if (limit.rlim_cur == RLIM_INFINITY) {
+    EXPECT_NEAR(double(available_memory_bytes()), double(machine), 0.05 * double(machine));
+  }
+}
+
+TEST(AvailableMemory, ResidentBytesCountWhatTheProcessTouches) {
+  const uint64_t before = resident_bytes();
+  EXPECT_GT(before, 0u);
+  std::vector<char> touched(size_t(64) << 20);
+  for (size_t i = 0; i < touched.size(); i += 4096) touched[i] = char(i);
+  EXPECT_GE(resident_bytes(), before + (uint64_t(60) << 20));
+  EXPECT_EQ(touched[4096], char(4096));
 }
 
 TEST(AvailableMemory, IsCappedByTheRoomLeftUnderUlimitV) {

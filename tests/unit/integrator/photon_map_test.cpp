@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/accel/brute_force.h"
+#include "mjray/core/available_memory.h"
 #include "mjray/core/error.h"
 #include "mjray/core/rng.h"
 #include "mjray/integrator/photon/density_estimate.h"
@@ -298,6 +299,22 @@ TEST(PhotonMaps, ProcessesOnOneMachineEachTakeTheirShareOfItsMemory) {
               std::string::npos)
         << message;
   }
+}
+
+TEST(PhotonMaps, AProcessSharingItsMachineCountsAllItHoldsAgainstItsShareOfTheStart) {
+  const World world = photon_world();
+  const BruteForce accel(world.primitives);
+  PhotonSettings settings;
+  settings.global_photons = 4 * kPilotPhotons;
+  settings.processes_sharing_memory = 2;
+  // A share no larger than what this process holds already: refused.
+  settings.memory_at_start_bytes = 2 * resident_bytes();
+  EXPECT_THROW(PhotonMaps(world, accel, settings, 5, 2), SceneError);
+  // A share of a GiB more: made, the same map as alone.
+  settings.memory_at_start_bytes = 2 * (resident_bytes() + (uint64_t(1) << 30));
+  const PhotonMaps shared(world, accel, settings, 5, 2);
+  const PhotonMaps alone(world, accel, PhotonSettings{.global_photons = 4 * kPilotPhotons}, 5, 2);
+  EXPECT_EQ(shared.global().size(), alone.global().size());
 }
 
 }  // namespace

@@ -43,6 +43,27 @@ std::string rounded_count(uint64_t count) {
   return std::to_string((count + 500'000) / 1'000'000) + " million";
 }
 
+/// What a map may take, read when it is made so that an earlier map counts against it; 0:
+/// unknown, no limit. `machine` and `sharing` say where it came from, for messages.
+struct MapBudget {
+  uint64_t bytes = 0;
+  uint64_t machine = 0;
+  int sharing = 1;
+};
+
+MapBudget map_budget(const PhotonSettings& settings) {
+  const int sharing = std::max(1, settings.processes_sharing_memory);
+  if (settings.memory_budget_bytes > 0)
+    return {settings.memory_budget_bytes / uint64_t(sharing), settings.memory_budget_bytes, sharing};
+  if (sharing == 1 || settings.memory_at_start_bytes == 0) return {available_memory_bytes(), 0, 1};
+  // This process's share of what the machine had at the start, less all it holds now, and no
+  // more than it could be given now. At least a byte: 0 would read as "no limit".
+  const uint64_t share = settings.memory_at_start_bytes / uint64_t(sharing), held = resident_bytes();
+  uint64_t bytes = share > held ? share - held : 1;
+  if (const uint64_t now = available_memory_bytes(); now > 0) bytes = std::min(bytes, now);
+  return {bytes, settings.memory_at_start_bytes, sharing};
+}
+
 /// How the budget was shared: " to each of the 4 processes on this machine (of 23.1 GiB)".
 std::string share_text(uint64_t machine_bytes, int processes) {
   if (processes == 1) return "";
@@ -67,20 +88,17 @@ PhotonMaps::PhotonMaps(const World& world, const Accelerator& accel, const Photo
   // Compute each map: trace its photons, then build its tree.
   const auto build_map = [&](const PhotonSource& source, PhotonPaths paths, uint64_t count) {
     auto start = Clock::now();
-    // Read when each map is made, so that the caustic map counts against the global one.
-    const uint64_t machine = settings.memory_budget_bytes ? settings.memory_budget_bytes : available_memory_bytes();
-    const int sharing = std::max(1, settings.processes_sharing_memory);
-    const uint64_t budget = machine / uint64_t(sharing);
+    const MapBudget budget = map_budget(settings);
     TracedPhotons traced;
     try {
       traced = trace_photons(world, accel, source, paths, count, seed, threads,
-                             budget ? budget / kPeakBytesPerPhoton : UINT64_MAX);
+                             budget.bytes ? budget.bytes / kPeakBytesPerPhoton : UINT64_MAX);
     } catch (const PhotonMapTooLarge& e) {
       const std::string option = paths == PhotonPaths::kCaustic ? "--caustics " : "--gi ";
       throw SceneError(option + std::to_string(count) + ": the photon map would hold about " +
                        rounded_count(e.expected_photons()) + " photons and need about " +
                        memory_text(double(e.expected_photons() * kPeakBytesPerPhoton)) + " of memory, more than the " +
-                       memory_text(double(budget)) + " available" + share_text(machine, sharing) +
+                       memory_text(double(budget.bytes)) + " available" + share_text(budget.machine, budget.sharing) +
                        "; ask for fewer photons");
     }
     statistics_.seconds_trace += seconds_since(start);

@@ -19,9 +19,12 @@ struct PhotonSettings {
   float global_radius_share = 0.05f;
   /// The memory a map may take while it is made; 0: what the machine has available then.
   uint64_t memory_budget_bytes = 0;
-  /// Processes on this machine that make the same maps at once (mjray-mpi's ranks on one
-  /// host): each may take this share of the budget.
+  /// Processes started together on this machine that make maps at the same time (mjray-mpi's
+  /// ranks on one host), and what the machine had available when they started. Each may then
+  /// hold 1/N of that, everything it holds counted, rather than what is available when its map
+  /// is made, which the others' maps may have taken by then or may yet take.
   int processes_sharing_memory = 1;
+  uint64_t memory_at_start_bytes = 0;
 
   bool caustics() const { return caustic_photons > 0; }
   bool global_illumination() const { return global_photons > 0; }
