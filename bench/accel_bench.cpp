@@ -177,10 +177,8 @@ World world_from_obj(TriangleMesh obj) {
   for (const auto& t : obj.triangles)
     faces.push_back({uint32_t(t[0].position), uint32_t(t[1].position), uint32_t(t[2].position)});
   world.primitives.add_triangles(obj.positions, faces);
-  // Normals and uvs are dropped: hits need positions only.
-  mesh.corners = std::move(obj.triangles);
-  for (auto& tri : mesh.corners)
-    for (auto& c : tri) c.normal = c.uv = -1;
+  // Normals and uvs are dropped (no corners): hits need positions only.
+  mesh.triangle_count = uint32_t(faces.size());
   world.meshes.push_back(std::move(mesh));
   return world;
 }

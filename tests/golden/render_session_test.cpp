@@ -324,10 +324,20 @@ void interrupt_in_frame_two(const std::vector<std::string>& args, const std::fil
     first.interrupt();
     const int code = first.exit_code();
     tries += first.log();
-    if (code == 0) continue;  // all done before the interrupt
+    if (code == 0) {  // all done before the interrupt
+      wait /= 2;
+      continue;
+    }
     ASSERT_EQ(code, 130) << first.log();
     if (std::filesystem::exists(state(2))) return;
-    wait = std::filesystem::exists(frame(2)) ? wait / 2 : wait * 2;
+    if (std::filesystem::exists(frame(2))) {
+      wait /= 2;
+      continue;
+    }
+    // Nothing of frame 2: the interrupt came while it was prepared, which takes milliseconds;
+    // not after 400 ms, unless the state was not written.
+    ASSERT_LT(wait, std::chrono::milliseconds(400)) << "no state for frame 2:\n" << first.log();
+    wait *= 2;
   }
   FAIL() << "no try was interrupted while frame 2 rendered:\n" << tries;
 }
@@ -431,7 +441,8 @@ TEST(GoldenRender, InterruptedAntialiasingPassResumesWhereItStoppedToTheSameByte
     Child first({"-a", "3", "--accel", "none", "-j", "1", scene.string()});
     const bool in_pass = first.wait_for("(anti-aliasing pass 1)");
     if (in_pass) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      // Longer each try: a busy machine may not finish a pixel in the first 300 ms.
+      std::this_thread::sleep_for(std::chrono::milliseconds(300) * (1 << attempt));
       first.interrupt();
     }
     const int code = first.exit_code();

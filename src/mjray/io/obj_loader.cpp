@@ -343,7 +343,10 @@ TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary, si
   // cost as much again in fresh memory, which is slow to fault in. A line longer than the
   // buffer grows it.
   ObjParser parser(name, summary);
-  std::string buffer(std::max<size_t>(piece_bytes, 1), '\0');
+  std::error_code size_error;
+  const auto size = std::filesystem::file_size(path, size_error);
+  const size_t first_piece = size_error ? piece_bytes : std::min<uintmax_t>(piece_bytes, size + 1);
+  std::string buffer(std::max<size_t>(first_piece, 1), '\0');
   size_t held = 0;  // the start of a statement the last piece did not finish
   while (true) {
     if (held == buffer.size()) buffer.resize(2 * buffer.size());

@@ -30,7 +30,7 @@ TEST(FileHash, IsFnv1aOfTheBytesOrSaysTheFileIsMissing) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(BackgroundFileHashes, GivesFileHashOfEachRegularFileAddedOnce) {
+TEST(BackgroundFileHashes, GivesFileHashOfEachRegularFileAdded) {
   const auto dir = test::make_temp_dir("background-hash");
   std::vector<std::filesystem::path> files;
   for (int i = 0; i < 20; ++i) {
@@ -39,7 +39,7 @@ TEST(BackgroundFileHashes, GivesFileHashOfEachRegularFileAddedOnce) {
   }
   BackgroundFileHashes hashes;
   for (const auto& f : files) hashes.add(f);
-  hashes.add(files[3]);                // again
+  hashes.add(files[3]);                // again, unchanged: hashed once
   hashes.add(dir / "missing");         // not a regular file: left out
   hashes.add(dir);                     // a folder: left out
   const auto result = hashes.wait();
@@ -49,6 +49,21 @@ TEST(BackgroundFileHashes, GivesFileHashOfEachRegularFileAddedOnce) {
   test::write_file(dir / "late", "late");
   hashes.add(dir / "late");
   EXPECT_EQ(hashes.wait().at(dir / "late"), file_hash(dir / "late"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(BackgroundFileHashes, AFileChangedAfterItWasHashedIsLeftOutOrHashedAgain) {
+  const auto dir = test::make_temp_dir("background-hash-changed");
+  test::write_file(dir / "a", "first");
+  BackgroundFileHashes hashes;
+  hashes.add(dir / "a");
+  EXPECT_EQ(hashes.wait().at(dir / "a"), file_hash(dir / "a"));
+  // Rewritten (another size, so that the stamp differs whatever the clock's resolution).
+  test::write_file(dir / "a", "second version");
+  EXPECT_EQ(hashes.wait().count(dir / "a"), 0u);  // left to be hashed when needed
+  hashes.add(dir / "a");
+  EXPECT_EQ(hashes.wait().at(dir / "a"), file_hash(dir / "a"));
+  EXPECT_NE(file_hash(dir / "a"), "missing");
   std::filesystem::remove_all(dir);
 }
 
