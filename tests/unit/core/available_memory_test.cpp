@@ -33,7 +33,7 @@ TEST(AvailableMemory, IsSomeOfTheMachinesMemory) {
   EXPECT_LE(available, memory_total());
 }
 
-TEST(AvailableMemory, TheMachinesLeavesOutOnlyThisProcesssOwnLimit) {
+TEST(AvailableMemory, TheMachinesFigureLeavesOutOnlyTheAddressSpaceLimit) {
   const uint64_t machine = machine_available_bytes();
   EXPECT_GT(machine, 0u);
   EXPECT_LE(machine, memory_total());
