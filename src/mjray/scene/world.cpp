@@ -42,8 +42,8 @@ SurfaceInteraction World::shade(const Ray& ray, const Hit& hit) const {
     // Compute the point and normals from barycentrics, in world space.
     const WorldMesh& mesh = mesh_of(hit.prim);
     // The face's normal and texture coordinate indices, if the mesh has any.
-    const std::array<MeshCorner, 3> c =
-        mesh.corners.empty() ? std::array<MeshCorner, 3>{} : mesh.corners[hit.prim - mesh.first_triangle];
+    static constexpr std::array<MeshCorner, 3> kNoCorners{};
+    const auto& c = mesh.corners.empty() ? kNoCorners : mesh.corners[hit.prim - mesh.first_triangle];
     const auto [p0, p1, p2] = primitives.triangle_vertices(hit.prim);
     const float b0 = 1 - hit.u - hit.v;
     const Vector3 weighted = Vector3(p0.x, p0.y, p0.z) * b0 + Vector3(p1.x, p1.y, p1.z) * hit.u +

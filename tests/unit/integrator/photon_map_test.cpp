@@ -260,21 +260,27 @@ TEST(PhotonTracer, AMapThatWouldHoldTooManyIsRefusedFromASampleOfItsPhotons) {
   EXPECT_THROW(trace_photons(world, accel, source, PhotonPaths::kGlobal, 1000, 5, 2, 10), PhotonMapTooLarge);
 }
 
-TEST(PhotonMaps, AMapThatWouldNotFitSaysWhichOptionAndHowMuchMemory) {
+/// The SceneError PhotonMaps throws for `settings` on photon_world(), or "" when the maps are made.
+std::string refusal(const PhotonSettings& settings) {
   const World world = photon_world();
   const BruteForce accel(world.primitives);
+  try {
+    const PhotonMaps maps(world, accel, settings, 5, 2);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PhotonMaps, AMapThatWouldNotFitSaysWhichOptionAndHowMuchMemory) {
   PhotonSettings settings;
   settings.global_photons = 4 * kPilotPhotons;
   settings.memory_budget_bytes = 1 << 20;
-  try {
-    const PhotonMaps maps(world, accel, settings, 5, 2);
-    FAIL() << "the map fitted in 1 MiB";
-  } catch (const SceneError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind("--gi 262144: the photon map would hold about ", 0), 0u) << message;
-    EXPECT_NE(message.find(" of memory, more than the 1 MiB available; ask for fewer photons"), std::string::npos)
-        << message;
-  }
+  const std::string message = refusal(settings);
+  ASSERT_NE(message, "") << "the map fitted in 1 MiB";
+  EXPECT_EQ(message.rfind("--gi 262144: the photon map would hold about ", 0), 0u) << message;
+  EXPECT_NE(message.find(" of memory, more than the 1 MiB available; ask for fewer photons"), std::string::npos)
+      << message;
 }
 
 TEST(PhotonMaps, ProcessesOnOneMachineEachTakeTheirShareOfItsMemory) {
@@ -289,16 +295,13 @@ TEST(PhotonMaps, ProcessesOnOneMachineEachTakeTheirShareOfItsMemory) {
   // Enough processes that each share holds half of the map's photons: refused, saying so.
   settings.processes_sharing_memory = int(settings.memory_budget_bytes / (held * sizeof(Photon) / 2));
   ASSERT_GT(settings.processes_sharing_memory, 1);
-  try {
-    const PhotonMaps shared(world, accel, settings, 5, 2);
-    FAIL() << "a map of " << held << " photons fitted in 1/" << settings.processes_sharing_memory << " of 64 MiB";
-  } catch (const SceneError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find(" available to each of the " + std::to_string(settings.processes_sharing_memory) +
-                           " processes on this machine (of 64 MiB); ask for fewer photons"),
-              std::string::npos)
-        << message;
-  }
+  const std::string message = refusal(settings);
+  ASSERT_NE(message, "") << "a map of " << held << " photons fitted in 1/" << settings.processes_sharing_memory
+                         << " of 64 MiB";
+  EXPECT_NE(message.find(" available to each of the " + std::to_string(settings.processes_sharing_memory) +
+                         " processes on this machine (of 64 MiB); ask for fewer photons"),
+            std::string::npos)
+      << message;
 }
 
 TEST(PhotonMaps, AProcessSharingItsMachineCountsAllItHoldsAgainstItsShareOfTheStart) {
