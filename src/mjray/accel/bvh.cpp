@@ -113,25 +113,14 @@ bool cpu_has_avx() {
 #endif
 }
 
-/// mjray's own tree: binned SAH, then collapsed to wide nodes. The binary tree is freed before
-/// the leaves are filled, so that the build's peak memory is the mesh scene's peak.
+/// mjray's own tree: binned SAH, gathered into wide nodes as it is built.
 BvhTree built_tree(const PrimitiveSet& prims, int threads) {
   if (prims.size() > BvhWideNode::kMaxLeafPrimitives)
     throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
                             " primitives; use --accel embree for this scene");
   static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
-  BvhBuildResult built = build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
-                                   {.threads = threads, .shapes_from = uint32_t(prims.triangles.size())});
-  // Room for the layout in the wide nodes' own array: a binary tree of n nodes has n / 2 inner
-  // ones, each the root of at most one wide node, and a leaf root takes one more.
-  const size_t layout_room = BvhLayout::bytes_bound(built.nodes.size() / 2 + 1, built.order.size());
-  BvhTree tree{collapse_to_wide(built.nodes, (layout_room + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode)),
-               std::move(built.order), {}};
-  if (!built.nodes.empty()) {
-    const BvhNode& root = built.nodes.front();
-    tree.bounds = {{root.lo[0], root.lo[1], root.lo[2]}, {root.hi[0], root.hi[1], root.hi[2]}};
-  }
-  return tree;
+  return build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
+                   {.threads = threads, .shapes_from = uint32_t(prims.triangles.size())});
 }
 
 }  // namespace

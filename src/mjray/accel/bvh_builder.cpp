@@ -188,22 +188,34 @@ class Builder {
   Builder(BuildRefs refs, const BvhBuildOptions& options, ForkJoinPool& pool)
       : refs_(std::move(refs)), options_(options), pool_(pool) {}
 
-  // Builds over all the refs, whose extent is `all`.
-  BvhNodes build(const Extent& all) {
-    BvhNodes nodes;
-    nodes.reserve(refs_.size() * 2 / std::max(1, options_.max_leaf_size) + 1);
+  // The wide hierarchy over all the refs, whose extent is `all`, with room after its nodes
+  // for their BvhLayout.
+  BvhWideNodes build_wide(const Extent& all) {
+    BvhWideNodes nodes;
     if (refs_.empty()) return nodes;
-    build_node(0, uint32_t(refs_.size()), all, 0, nodes);
-    if (forked_.empty()) return nodes;
-    BvhNodes joined;
-    joined.reserve(nodes.size() + forked_size());
-    splice(nodes, 0, joined);
+    build_wide_node(divide(0, uint32_t(refs_.size()), all, 0), nodes);
+    const auto room = [&](size_t count) {
+      const size_t bytes = BvhLayout::bytes_bound(count, refs_.size());
+      return std::max(count, (bytes + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode));
+    };
+    if (forked_wide_.empty()) {
+      nodes.reserve(room(nodes.size()));
+      return nodes;
+    }
+    size_t count = nodes.size();
+    for (const BvhWideNodes& subtree : forked_wide_) count += subtree.size();
+    BvhWideNodes joined;
+    joined.reserve(room(count));
+    splice_wide(nodes, 0, joined);
     return joined;
   }
 
   std::vector<uint32_t> order() const {
     std::vector<uint32_t> ids(refs_.size());
-    for (size_t i = 0; i < refs_.size(); ++i) ids[i] = refs_[i].prim();
+    constexpr int kChunks = 16;
+    parallel_for(kChunks, pool_.threads(), [&](int chunk, int) {
+      for (auto [i, end] = chunk_range(refs_.size(), chunk, kChunks); i < end; ++i) ids[i] = refs_[i].prim();
+    });
     return ids;
   }
 
@@ -222,96 +234,155 @@ class Builder {
     return float(count) + (options_.shape_cost - 1) * float(shapes);
   }
 
-  // A node's `count` when it stands for the root of forked subtree number `offset`.
-  static constexpr uint16_t kForked = 0xffff;
+  // A node of the binary SAH hierarchy over refs_[begin, end), divided as soon as it is made:
+  // a leaf, or two children, refs_[begin, mid) of extent `left` and refs_[mid, end) of
+  // extent `right`, split on `axis`. Wide nodes gather these; no binary tree is stored.
+  struct Divided {
+    uint32_t begin = 0, end = 0, mid = 0;
+    int depth = 0;
+    Extent extent, left, right;
+    uint8_t axis = 0;
+    bool leaf = true;
+  };
 
-  // Appends the subtree over refs_[begin, end) (whose extent is `extent`) to `out`,
-  // depth-first (an interior node's first child follows it, `offset` is its second), except
-  // that a forked first child is a kForked node.
-  void build_node(uint32_t begin, uint32_t end, const Extent& extent, int depth, BvhNodes& out) {
+  // Divides the node over refs_[begin, end) (whose extent is `extent`): chooses its split,
+  // binned SAH on all three axes, or the median of the widest centroid axis when the
+  // centroids coincide, SAH found nothing, or the tree got too deep; and partitions its refs.
+  Divided divide(uint32_t begin, uint32_t end, const Extent& extent, int depth) {
+    Divided d{begin, end, begin, depth, extent, {}, {}, 0, true};
     const uint32_t n = end - begin;
-    const uint32_t index = uint32_t(out.size());
-    out.push_back({{extent.box.lo[0], extent.box.lo[1], extent.box.lo[2]},
-                   {extent.box.hi[0], extent.box.hi[1], extent.box.hi[2]}, 0, 0, 0});
-    const auto make_leaf = [&] {
-      out[index].offset = begin;
-      out[index].count = uint16_t(n);
-    };
-    if (n == 1) return make_leaf();
-
-    // Choose a split: binned SAH on all three axes, or the median of the widest centroid
-    // axis when the centroids coincide, SAH found nothing, or the tree got too deep.
+    if (n == 1) return d;
     const Box4& centroids = extent.centroids;
     const int widest = centroids.extent(0) >= centroids.extent(1) ? (centroids.extent(0) >= centroids.extent(2) ? 0 : 2)
                                                                    : (centroids.extent(1) >= centroids.extent(2) ? 1 : 2);
-    uint32_t mid = begin;
     int axis = widest;
-    Extent left, right;
     bool use_median = depth >= kMaxSahDepth || !(centroids.extent(widest) > 0);
     if (!use_median) {
       const Binner binner(centroids, n);
       const Split split = find_split(begin, end, binner);
       const float leaf_cost = split.node_tests * extent.box.half_area();
-      if (n <= uint32_t(options_.max_leaf_size) && leaf_cost <= split.cost) return make_leaf();
+      if (n <= uint32_t(options_.max_leaf_size) && leaf_cost <= split.cost) return d;
       if (split.axis < 0) {
         use_median = true;
       } else {
         axis = split.axis;
-        mid = partition(begin, end, [&](const BuildRef& r) { return binner.bin(r, axis) < split.bin; }, left, right);
-        use_median = mid == begin || mid == end;
+        d.mid = partition(begin, end, [&](const BuildRef& r) { return binner.bin(r, axis) < split.bin; }, d.left, d.right);
+        use_median = d.mid == begin || d.mid == end;
       }
     }
     if (use_median) {
-      if (n <= uint32_t(options_.max_leaf_size)) return make_leaf();
+      if (n <= uint32_t(options_.max_leaf_size)) return d;
       axis = widest;
-      mid = begin + n / 2;
+      d.mid = begin + n / 2;
       if (centroids.extent(widest) > 0)
-        std::nth_element(refs_.data() + begin, refs_.data() + mid, refs_.data() + end,
+        std::nth_element(refs_.data() + begin, refs_.data() + d.mid, refs_.data() + end,
                          [&](const BuildRef& a, const BuildRef& b) { return a.centroid(axis) < b.centroid(axis); });
-      left = extent_of(begin, mid);
-      right = extent_of(mid, end);
+      d.left = extent_of(begin, d.mid);
+      d.right = extent_of(d.mid, end);
     }
-    out[index].axis = uint8_t(axis);
+    d.axis = uint8_t(axis);
+    d.leaf = false;
+    return d;
+  }
 
-    // Build the children: the first right after this node, the second after the first's
-    // subtree. A large first child is forked into a subtree of its own, spliced in later.
-    if (pool_.threads() > 1 && n >= kMinParallelSize) {
-      BvhNodes& first = new_forked(out);
-      ForkJoinPool::Task task(pool_, [&, begin, mid, depth] { build_node(begin, mid, left, depth + 1, first); });
-      out[index].offset = uint32_t(out.size());
-      build_node(mid, end, right, depth + 1, out);
+  bool forks(const Divided& d) const { return pool_.threads() > 1 && d.end - d.begin >= kMinParallelSize; }
+
+  // Divides the two children of `d` into `first` and `second`, at once when they are large.
+  void divide_children(const Divided& d, Divided& first, Divided& second) {
+    if (forks(d)) {
+      ForkJoinPool::Task task(pool_, [&] { first = divide(d.begin, d.mid, d.left, d.depth + 1); });
+      second = divide(d.mid, d.end, d.right, d.depth + 1);
       task.join();
     } else {
-      build_node(begin, mid, left, depth + 1, out);
-      out[index].offset = uint32_t(out.size());
-      build_node(mid, end, right, depth + 1, out);
+      first = divide(d.begin, d.mid, d.left, d.depth + 1);
+      second = divide(d.mid, d.end, d.right, d.depth + 1);
     }
   }
 
-  // Appends to `out` a kForked node for a new, empty subtree, and returns that subtree.
-  BvhNodes& new_forked(BvhNodes& out) {
-    std::lock_guard lock(forked_mutex_);
-    out.push_back({{}, {}, uint32_t(forked_.size()), kForked, 0});
-    return forked_.emplace_back();  // a deque: earlier subtrees stay where they are
-  }
+  // Appends to `out` the wide node gathered from the binary subtree of `d`, then the wide nodes
+  // below it depth-first, except that large inner children are forked into subtrees of their
+  // own (spliced in later) and named by kForkedChild words; returns its index. Its children:
+  // the two of `d`, then, while there is room, the inner child of largest surface area
+  // replaced by its two (the first in its slot, the second last), so that the boxes a ray
+  // tests together cover the most of the node.
+  uint32_t build_wide_node(const Divided& d, BvhWideNodes& out) {
+    std::array<Divided, kBvhWidth> kids;
+    std::array<float, kBvhWidth> area{};  // −1 for a leaf, which is never opened
+    const auto area_of = [](const Divided& kid) { return kid.leaf ? -1.f : kid.extent.box.half_area(); };
+    int n = 0;
+    if (d.leaf) {
+      kids[size_t(n++)] = d;  // a leaf root becomes the only child of a wide root
+    } else {
+      divide_children(d, kids[0], kids[1]);
+      n = 2;
+      area[0] = area_of(kids[0]);
+      area[1] = area_of(kids[1]);
+      while (n < kBvhWidth) {
+        int open = 0;
+        for (int i = 1; i < n; ++i)
+          if (area[size_t(i)] > area[size_t(open)]) open = i;
+        if (area[size_t(open)] < 0) break;
+        const Divided inner = kids[size_t(open)];
+        divide_children(inner, kids[size_t(open)], kids[size_t(n)]);
+        area[size_t(open)] = area_of(kids[size_t(open)]);
+        area[size_t(n)] = area_of(kids[size_t(n)]);
+        ++n;
+      }
+    }
 
-  size_t forked_size() const {
-    size_t size = 0;
-    for (const BvhNodes& subtree : forked_) size += subtree.size();
-    return size;
-  }
-
-  // Appends the subtree at nodes[i] to `out` in plain depth-first order, with forked
-  // subtrees in their places.
-  void splice(const BvhNodes& nodes, uint32_t i, BvhNodes& out) const {
-    const BvhNode& node = nodes[i];
-    if (node.count == kForked) return splice(forked_[node.offset], 0, out);
-    const size_t at = out.size();
+    // Fill the slots; unused ones keep empty bounds (lo = +inf, hi = −inf) and word 0.
+    const uint32_t index = uint32_t(out.size());
+    BvhWideNode node = BvhWideNode::without_children();
+    for (size_t i = 0; i < size_t(n); ++i) {
+      const Box4& box = kids[i].extent.box;
+      for (size_t k = 0; k < 3; ++k) {
+        node.bounds[k][i] = box.lo[k];
+        node.bounds[k + 3][i] = box.hi[k];
+      }
+      if (kids[i].leaf) node.child[i] = BvhWideNode::leaf_word(kids[i].begin, kids[i].end - kids[i].begin);
+    }
     out.push_back(node);
-    if (node.count > 0) return;
-    splice(nodes, i + 1, out);
-    out[at].offset = uint32_t(out.size());
-    splice(nodes, node.offset, out);
+    std::deque<ForkJoinPool::Task> tasks;
+    for (size_t i = 0; i < size_t(n); ++i) {
+      if (kids[i].leaf) continue;
+      if (forks(kids[i])) {
+        const auto [subtree, word] = new_forked_wide();
+        out[index].child[i] = word;
+        tasks.emplace_back(pool_, [this, &kids, i, subtree] { build_wide_node(kids[i], *subtree); });
+      } else {
+        const uint32_t child = build_wide_node(kids[i], out);
+        out[index].child[i] = child;
+      }
+    }
+    for (ForkJoinPool::Task& task : tasks) task.join();
+    return index;
+  }
+
+  // A child word naming forked wide subtree number (word & ~kForkedChild): above any node
+  // index (there are fewer nodes than primitives), below the leaf flag.
+  static constexpr uint32_t kForkedChild = 0x40000000u;
+  static_assert(BvhWideNode::kMaxLeafPrimitives <= kForkedChild && kForkedChild < BvhWideNode::kLeafFlag);
+
+  // A new, empty wide subtree, and the child word that names it.
+  std::pair<BvhWideNodes*, uint32_t> new_forked_wide() {
+    std::lock_guard lock(forked_mutex_);
+    const uint32_t word = kForkedChild | uint32_t(forked_wide_.size());
+    return {&forked_wide_.emplace_back(), word};  // a deque: earlier subtrees stay where they are
+  }
+
+  // Appends the wide subtree at nodes[i] to `out` in plain depth-first order, with forked
+  // subtrees in their places; returns the index of its root there.
+  uint32_t splice_wide(const BvhWideNodes& nodes, uint32_t i, BvhWideNodes& out) const {
+    const uint32_t index = uint32_t(out.size());
+    out.push_back(nodes[i]);
+    for (size_t c = 0; c < size_t(kBvhWidth); ++c) {
+      const uint32_t word = nodes[i].child[c];
+      if (word == 0 || nodes[i].is_leaf(c)) continue;  // an unused slot (no root is a child), or a leaf
+      const uint32_t child = (word & kForkedChild) != 0 ? splice_wide(forked_wide_[word & ~kForkedChild], 0, out)
+                                                        : splice_wide(nodes, word, out);
+      out[index].child[c] = child;
+    }
+    return index;
   }
 
   Extent extent_of(uint32_t begin, uint32_t end) const {
@@ -417,11 +488,16 @@ class Builder {
       std::array<float, kBins> right_cost;
       Box4 right;
       uint32_t right_count = 0, right_shapes = 0;
+      // A split after an empty bin has the sides, and so the cost, of the split before it, which
+      // was tried first and wins a tie: it is skipped, and so are empty bins' (empty) boxes.
       for (int b = count - 1; b > 0; --b) {
-        right.grow(axis_bins[size_t(b)].box);
-        right_count += axis_bins[size_t(b)].count;
-        right_shapes += axis_bins[size_t(b)].shapes;
-        right_cost[size_t(b)] = right.half_area() * tests(right_count, right_shapes);
+        const Bin& bin = axis_bins[size_t(b)];
+        if (bin.count > 0) {
+          right.grow(bin.box);
+          right_count += bin.count;
+          right_shapes += bin.shapes;
+        }
+        if (axis_bins[size_t(b - 1)].count > 0) right_cost[size_t(b)] = right.half_area() * tests(right_count, right_shapes);
       }
       Box4 node = right;
       node.grow(axis_bins[0].box);
@@ -429,10 +505,12 @@ class Builder {
       Box4 left;
       uint32_t left_count = 0, left_shapes = 0;
       for (int b = 1; b < count; ++b) {
-        left.grow(axis_bins[size_t(b - 1)].box);
-        left_count += axis_bins[size_t(b - 1)].count;
-        left_shapes += axis_bins[size_t(b - 1)].shapes;
-        if (left_count == 0 || left_count == n) continue;
+        const Bin& bin = axis_bins[size_t(b - 1)];
+        if (bin.count == 0) continue;
+        left.grow(bin.box);
+        left_count += bin.count;
+        left_shapes += bin.shapes;
+        if (left_count == n) break;
         const float cost = traversal + left.half_area() * tests(left_count, left_shapes) + right_cost[size_t(b)];
         if (cost < best.cost) best = {axis, b, cost, best.node_tests};
       }
@@ -444,106 +522,24 @@ class Builder {
   BvhBuildOptions options_;
   ForkJoinPool& pool_;
   std::mutex forked_mutex_;
-  std::deque<BvhNodes> forked_;  // subtrees built as forked tasks
+  std::deque<BvhWideNodes> forked_wide_;  // subtrees built as forked tasks
 };
 
 }  // namespace
 
-BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options) {
-  return build_bvh(uint32_t(bounds.size()), [&](uint32_t prim) { return bounds[prim]; }, options);
-}
-
-BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
-                         const BvhBuildOptions& options) {
+BvhTree build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
+                  const BvhBuildOptions& options) {
   const int threads = resolve_thread_count(options.threads);
   Extent all;
   BuildRefs refs = make_refs(count, bounds_of, threads, all);
   ForkJoinPool pool(threads);
   Builder builder(std::move(refs), options, pool);
-  BvhBuildResult result;
-  result.nodes = builder.build(all);
-  result.order = builder.order();
-  return result;
-}
-
-namespace {
-
-float surface_area(const BvhNode& n) {
-  const float dx = n.hi[0] - n.lo[0], dy = n.hi[1] - n.lo[1], dz = n.hi[2] - n.lo[2];
-  return dx * dy + dy * dz + dz * dx;
-}
-
-// Turns the binary tree into wide nodes.
-class Collapser {
- public:
-  explicit Collapser(const BvhNodes& binary) : binary_(binary) {}
-
-  // Appends the wide node for binary node `b` and its subtree; returns its index.
-  uint32_t collapse(uint32_t b, BvhWideNodes& out) const {
-    // Gather up to kBvhWidth children, opening the largest inner one each time.
-    std::array<uint32_t, kBvhWidth> kids{};
-    // Each kid's surface area, or −1 for a leaf (never opened).
-    std::array<float, kBvhWidth> area{};
-    int n = 0;
-    const auto add_kid = [&](uint32_t kid) {
-      kids[size_t(n)] = kid;
-      const BvhNode& node = binary_[kid];
-      area[size_t(n++)] = node.count > 0 ? -1 : surface_area(node);
-    };
-    if (is_leaf(b)) {
-      add_kid(b);  // a leaf root becomes the only child of a wide root
-    } else {
-      add_kid(b + 1);
-      add_kid(binary_[b].offset);
-      while (n < kBvhWidth) {
-        int open = 0;
-        for (int i = 1; i < n; ++i)
-          if (area[size_t(i)] > area[size_t(open)]) open = i;
-        if (area[size_t(open)] < 0) break;
-        // The opened node's place goes to its first child, its second child comes last.
-        const uint32_t inner = kids[size_t(open)];
-        const int last = n;
-        n = open;
-        add_kid(inner + 1);
-        n = last;
-        add_kid(binary_[inner].offset);
-      }
-    }
-
-    // Fill the slots; unused ones keep empty bounds (lo = +inf, hi = −inf).
-    const uint32_t index = uint32_t(out.size());
-    BvhWideNode node = BvhWideNode::without_children();
-    for (size_t i = 0; i < size_t(n); ++i) {
-      const BvhNode& kid = binary_[kids[i]];
-      for (size_t k = 0; k < 3; ++k) {
-        node.bounds[k][i] = kid.lo[k];
-        node.bounds[k + 3][i] = kid.hi[k];
-      }
-      if (is_leaf(kids[i])) node.child[i] = BvhWideNode::leaf_word(kid.offset, kid.count);
-    }
-    out.push_back(node);
-    for (size_t i = 0; i < size_t(n); ++i)
-      if (!is_leaf(kids[i])) {
-        const uint32_t child = collapse(kids[i], out);
-        out[index].child[i] = child;
-      }
-    return index;
-  }
-
- private:
-  bool is_leaf(uint32_t b) const { return binary_[b].count > 0; }
-
-  const BvhNodes& binary_;
-};
-
-}  // namespace
-
-BvhWideNodes collapse_to_wide(const BvhNodes& binary, size_t capacity) {
-  BvhWideNodes wide;
-  if (binary.empty()) return wide;
-  wide.reserve(std::max(capacity, binary.size() / (kBvhWidth - 1) + 1));
-  Collapser(binary).collapse(0, wide);
-  return wide;
+  BvhTree tree;
+  tree.nodes = builder.build_wide(all);
+  tree.order = builder.order();
+  if (!tree.nodes.empty())
+    tree.bounds = {{all.box.lo[0], all.box.lo[1], all.box.lo[2]}, {all.box.hi[0], all.box.hi[1], all.box.hi[2]}};
+  return tree;
 }
 
 }  // namespace mjray

@@ -1,6 +1,6 @@
 #pragma once
-/// Construction of the BVH: a binary tree by binned SAH, then collapsed to wide nodes; kept
-/// apart from traversal so that either can change without touching the other.
+/// Construction of the BVH's wide nodes by binned SAH; kept apart from traversal so that
+/// either can change without touching the other.
 
 #include <array>
 #include <cstdint>
@@ -12,28 +12,6 @@
 #include "mjray/core/bounds.h"
 
 namespace mjray {
-
-/// One node of the binary hierarchy, flattened depth-first in 32 bytes: an interior node's
-/// first child follows it directly.
-struct BvhNode {
-  std::array<float, 3> lo;  ///< world-space bounds
-  std::array<float, 3> hi;
-  uint32_t offset;          ///< leaf: first index into `order`; interior: index of the second child
-  uint16_t count;           ///< leaf: number of primitives (≥ 1); interior: 0
-  uint8_t axis;             ///< interior: split axis
-  uint8_t pad = 0;
-};
-static_assert(sizeof(BvhNode) == 32);
-
-/// Binary nodes, on large pages: a million-triangle build fills tens of megabytes at once.
-using BvhNodes = std::vector<BvhNode, LargePageAllocator<BvhNode>>;
-
-/// The built hierarchy: nodes depth-first (root first), and the primitive ids in leaf
-/// order; a leaf's `offset`/`count` index `order`.
-struct BvhBuildResult {
-  BvhNodes nodes;
-  std::vector<uint32_t> order;
-};
 
 /// Tuning of the build; the defaults are what the renderer uses.
 struct BvhBuildOptions {
@@ -49,17 +27,12 @@ struct BvhBuildOptions {
   float shape_cost = 4.0f;
 };
 
-/// Builds over primitives 0..bounds.size()-1 with world-space `bounds[prim]`. Primitives with
-/// empty or non-finite bounds are left out.
-BvhBuildResult build_bvh(std::span<const Bounds3> bounds, const BvhBuildOptions& options);
-/// The same over primitives 0..count-1 whose bounds `bounds_of(prim)` gives, asked once each
-/// (so that no array of all bounds need be held beside the build's own copy).
-BvhBuildResult build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
-                         const BvhBuildOptions& options);
-
-/// Collapses a binary hierarchy into kBvhWidth-wide nodes (root first) by repeatedly opening
-/// the inner child with the largest surface area; leaves keep their `order` ranges. The array
-/// has room for at least `capacity` nodes.
-BvhWideNodes collapse_to_wide(const BvhNodes& binary, size_t capacity = 0);
+/// The wide hierarchy over primitives 0..count-1 whose world-space bounds `bounds_of(prim)`
+/// gives, asked once each (so that no array of all bounds need be held beside the build's own
+/// copy): the nodes (root first, depth-first, with room after them for the Bvh's layout of
+/// them in place), the primitive ids in leaf order (a leaf word's first and count index it),
+/// and the bounds. A binary tree is chosen by binned SAH and gathered into kBvhWidth-wide nodes
+/// as it is made. Primitives with empty or non-finite bounds are left out.
+BvhTree build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, const BvhBuildOptions& options);
 
 }  // namespace mjray

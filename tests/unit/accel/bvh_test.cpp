@@ -271,34 +271,39 @@ std::vector<Bounds3> lattice_of_boxes(int n) {
   return boxes;
 }
 
-double mean_leaf_size(const BvhBuildResult& built, uint32_t from, uint32_t to) {
+BvhTree build_over(const std::vector<Bounds3>& boxes, const BvhBuildOptions& options) {
+  return build_bvh(uint32_t(boxes.size()), [&](uint32_t prim) { return boxes[prim]; }, options);
+}
+
+double mean_leaf_size(const BvhTree& built, uint32_t from, uint32_t to) {
   double primitives = 0, leaves = 0;
-  for (const BvhNode& node : built.nodes) {
-    if (node.count == 0 || built.order[node.offset] < from || built.order[node.offset] >= to) continue;
-    primitives += node.count;
-    ++leaves;
-  }
+  for (const BvhWideNode& node : built.nodes)
+    for (size_t i = 0; i < size_t(kBvhWidth); ++i) {
+      if (!node.is_leaf(i) || built.order[node.first(i)] < from || built.order[node.first(i)] >= to) continue;
+      primitives += node.count(i);
+      ++leaves;
+    }
   return primitives / leaves;
 }
 
 TEST(BvhBuild, ShapesCostlierThanTrianglesGetSmallerLeaves) {
   const std::vector<Bounds3> boxes = lattice_of_boxes(12);
   const uint32_t n = uint32_t(boxes.size());
-  const BvhBuildResult as_triangles = build_bvh(boxes, {.threads = 1});
-  const BvhBuildResult as_shapes = build_bvh(boxes, {.threads = 1, .shapes_from = 0});
+  const BvhTree as_triangles = build_over(boxes, {.threads = 1});
+  const BvhTree as_shapes = build_over(boxes, {.threads = 1, .shapes_from = 0});
   EXPECT_GT(mean_leaf_size(as_triangles, 0, n), 2.0);
   EXPECT_LT(mean_leaf_size(as_shapes, 0, n), 0.75 * mean_leaf_size(as_triangles, 0, n));
 
   // A shape costing one triangle test builds the triangles' tree exactly.
-  const BvhBuildResult unit_cost = build_bvh(boxes, {.threads = 1, .shapes_from = 0, .shape_cost = 1});
+  const BvhTree unit_cost = build_over(boxes, {.threads = 1, .shapes_from = 0, .shape_cost = 1});
   ASSERT_EQ(unit_cost.nodes.size(), as_triangles.nodes.size());
-  EXPECT_EQ(std::memcmp(unit_cost.nodes.data(), as_triangles.nodes.data(), unit_cost.nodes.size() * sizeof(BvhNode)), 0);
+  EXPECT_EQ(std::memcmp(unit_cost.nodes.data(), as_triangles.nodes.data(), unit_cost.nodes.size() * sizeof(BvhWideNode)), 0);
   EXPECT_EQ(unit_cost.order, as_triangles.order);
 
   // Mixed: a second lattice beside the first is of shapes; only its leaves shrink.
   std::vector<Bounds3> mixed = boxes;
   for (const Bounds3& b : boxes) mixed.push_back({b.lo + Vector3(100, 0, 0), b.hi + Vector3(100, 0, 0)});
-  const BvhBuildResult both = build_bvh(mixed, {.threads = 1, .shapes_from = n});
+  const BvhTree both = build_over(mixed, {.threads = 1, .shapes_from = n});
   EXPECT_LT(mean_leaf_size(both, n, 2 * n), mean_leaf_size(both, 0, n));
 }
 
@@ -317,6 +322,15 @@ PrimitiveSet scattered_world(int triangles, uint32_t seed) {
   PrimitiveSet world = mesh_world(positions, faces);
   add_shapes(world, 12, seed + 1);
   return world;
+}
+
+TEST(BvhBuild, OnePrimitiveIsALeafUnderARootAndNoneIsNoNode) {
+  const PrimitiveSet world = scattered_world(1, 3);
+  const BvhTree one = build_bvh(1, [&](uint32_t prim) { return world.primitive_bounds(prim); }, {.threads = 2});
+  ASSERT_EQ(one.nodes.size(), 1u);
+  EXPECT_EQ(one.nodes[0].child[0], BvhWideNode::leaf_word(0, 1));
+  EXPECT_EQ(one.order, std::vector<uint32_t>{0});
+  EXPECT_TRUE(build_bvh(0, [&](uint32_t prim) { return world.primitive_bounds(prim); }, {}).nodes.empty());
 }
 
 TEST(BvhLayout, EachNodeIsFollowedByItsLeavesRunsInDepthFirstOrder) {
