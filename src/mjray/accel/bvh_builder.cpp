@@ -346,9 +346,9 @@ class Builder {
     for (size_t i = 0; i < size_t(n); ++i) {
       if (kids[i].leaf) continue;
       if (forks(kids[i])) {
-        const auto [subtree, word] = new_forked_wide();
-        out[index].child[i] = word;
-        tasks.emplace_back(pool_, [this, &kids, i, subtree] { build_wide_node(kids[i], *subtree); });
+        const std::pair<BvhWideNodes*, uint32_t> forked = new_forked_wide();
+        out[index].child[i] = forked.second;
+        tasks.emplace_back(pool_, [this, &kids, i, subtree = forked.first] { build_wide_node(kids[i], *subtree); });
       } else {
         const uint32_t child = build_wide_node(kids[i], out);
         out[index].child[i] = child;
