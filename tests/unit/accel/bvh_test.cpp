@@ -324,6 +324,17 @@ PrimitiveSet scattered_world(int triangles, uint32_t seed) {
   return world;
 }
 
+// The trees' surface-area cost (a node 2, a primitive 1) may fall as the builder improves, never
+// rise: a change that makes worse trees shows here before it shows in rays per second. The
+// bounds are the builder's costs when this test was written (docs/performance.md, "Trees").
+TEST(BvhBuild, TreesCostNoMoreThanTheBinnedSahTreesOfRecord) {
+  MJRAY_REQUIRE_SHARED(shared);
+  for (const auto& [mesh, cost] : {std::pair{"small/teapot.obj", 18.6806}, std::pair{"small/bunny.obj", 23.9357}}) {
+    const PrimitiveSet world = obj_world(shared / "models" / mesh);
+    for (int threads : {1, 2}) EXPECT_LE(Bvh(world, threads).sah_cost(2, 1), cost) << mesh << " " << threads;
+  }
+}
+
 TEST(BvhBuild, OnePrimitiveIsALeafUnderARootAndNoneIsNoNode) {
   const PrimitiveSet world = scattered_world(1, 3);
   const BvhTree one = build_bvh(1, [&](uint32_t prim) { return world.primitive_bounds(prim); }, {.threads = 2});
