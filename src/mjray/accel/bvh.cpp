@@ -34,7 +34,7 @@ namespace mjray {
 
 namespace {
 
-// The builder's binary depth stays under 64 and collapsing never deepens it; each wide
+// The builder's binary depth stays under 64 and gathering wide nodes never deepens it; each wide
 // node pushes at most kBvhWidth − 1 entries.
 constexpr int kStackSize = (kBvhWidth - 1) * 64 + 1;
 
@@ -115,10 +115,6 @@ bool cpu_has_avx() {
 
 /// mjray's own tree: binned SAH, gathered into wide nodes as it is built.
 BvhTree built_tree(const PrimitiveSet& prims, int threads) {
-  if (prims.size() > BvhWideNode::kMaxLeafPrimitives)
-    throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
-                            " primitives; use --accel embree for this scene");
-  static_assert(BvhBuildOptions{}.max_leaf_size < (1 << BvhWideNode::kCountBits));
   return build_bvh(prims.size(), [&](uint32_t prim) { return prims.primitive_bounds(prim); },
                    {.threads = threads, .shapes_from = uint32_t(prims.triangles.size())});
 }
@@ -151,7 +147,7 @@ Bvh::Bvh(const PrimitiveSet& prims, BvhTree tree, int threads, BvhSimd simd)
 
   // Move the nodes to their places, last first: a node's place is never before its index in
   // the array, so each lands where only nodes already moved were. The array grows in place
-  // where its producer reserved room for the layout (built_tree does).
+  // where its producer reserved room for the layout (build_bvh does).
   layout_ = std::move(tree.nodes);
   layout_.resize((layout_size_ + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode));
   std::byte* layout = layout_bytes();

@@ -1,6 +1,6 @@
 #pragma once
 /// The default accelerator: a bounding volume hierarchy built with the binned surface area
-/// heuristic, collapsed to eight children per node so that a few SIMD slab tests cover all
+/// heuristic, gathered into eight children per node so that a few SIMD slab tests cover all
 /// of a node's boxes and a ray visits few nodes.
 
 #include <array>

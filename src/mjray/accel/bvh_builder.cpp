@@ -1,11 +1,16 @@
 #include "mjray/accel/bvh_builder.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
-#include <cmath>
 #include <deque>
 #include <mutex>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "mjray/core/error.h"
 #include "mjray/core/fork_join.h"
 #include "mjray/core/parallel_for.h"
 
@@ -18,8 +23,8 @@ namespace mjray {
 namespace {
 
 constexpr int kBins = 32;
-// Below this many primitives a subtree is built by the thread that reached it; above, its
-// first child is forked for any thread of the pool to take.
+// Below this many primitives a subtree is built by the thread that reached it; above, the
+// division of its first child, and its wide subtree, are forked for any thread of the pool.
 constexpr uint32_t kMinParallelSize = 8192;
 // Above this many primitives a node's binning is shared among the pool's threads.
 constexpr uint32_t kMinParallelBinning = 65536;
@@ -195,8 +200,7 @@ class Builder {
     if (refs_.empty()) return nodes;
     build_wide_node(divide(0, uint32_t(refs_.size()), all, 0), nodes);
     const auto room = [&](size_t count) {
-      const size_t bytes = BvhLayout::bytes_bound(count, refs_.size());
-      return std::max(count, (bytes + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode));
+      return (BvhLayout::bytes_bound(count, refs_.size()) + sizeof(BvhWideNode) - 1) / sizeof(BvhWideNode);
     };
     if (forked_wide_.empty()) {
       nodes.reserve(room(nodes.size()));
@@ -207,6 +211,7 @@ class Builder {
     BvhWideNodes joined;
     joined.reserve(room(count));
     splice_wide(nodes, 0, joined);
+    forked_wide_.clear();
     return joined;
   }
 
@@ -299,41 +304,46 @@ class Builder {
     }
   }
 
-  // Appends to `out` the wide node gathered from the binary subtree of `d`, then the wide nodes
-  // below it depth-first, except that large inner children are forked into subtrees of their
-  // own (spliced in later) and named by kForkedChild words; returns its index. Its children:
-  // the two of `d`, then, while there is room, the inner child of largest surface area
-  // replaced by its two (the first in its slot, the second last), so that the boxes a ray
-  // tests together cover the most of the node.
-  uint32_t build_wide_node(const Divided& d, BvhWideNodes& out) {
-    std::array<Divided, kBvhWidth> kids;
+  // Gathers into `kids` the children of the wide node for the binary subtree of `d`, and
+  // returns how many: the two of `d`, then, while there is room, the inner child of largest
+  // surface area replaced by its two (the first in its slot, the second last), so that the
+  // boxes a ray tests together cover the most of the node. A leaf `d` is its only child.
+  int gather_children(const Divided& d, std::array<Divided, kBvhWidth>& kids) {
+    if (d.leaf) {
+      kids[0] = d;
+      return 1;
+    }
     std::array<float, kBvhWidth> area{};  // −1 for a leaf, which is never opened
     const auto area_of = [](const Divided& kid) { return kid.leaf ? -1.f : kid.extent.box.half_area(); };
-    int n = 0;
-    if (d.leaf) {
-      kids[size_t(n++)] = d;  // a leaf root becomes the only child of a wide root
-    } else {
-      divide_children(d, kids[0], kids[1]);
-      n = 2;
-      area[0] = area_of(kids[0]);
-      area[1] = area_of(kids[1]);
-      while (n < kBvhWidth) {
-        int open = 0;
-        for (int i = 1; i < n; ++i)
-          if (area[size_t(i)] > area[size_t(open)]) open = i;
-        if (area[size_t(open)] < 0) break;
-        const Divided inner = kids[size_t(open)];
-        divide_children(inner, kids[size_t(open)], kids[size_t(n)]);
-        area[size_t(open)] = area_of(kids[size_t(open)]);
-        area[size_t(n)] = area_of(kids[size_t(n)]);
-        ++n;
-      }
+    divide_children(d, kids[0], kids[1]);
+    area[0] = area_of(kids[0]);
+    area[1] = area_of(kids[1]);
+    int n = 2;
+    while (n < kBvhWidth) {
+      int open = 0;
+      for (int i = 1; i < n; ++i)
+        if (area[size_t(i)] > area[size_t(open)]) open = i;
+      if (area[size_t(open)] < 0) break;
+      const Divided inner = kids[size_t(open)];
+      divide_children(inner, kids[size_t(open)], kids[size_t(n)]);
+      area[size_t(open)] = area_of(kids[size_t(open)]);
+      area[size_t(n)] = area_of(kids[size_t(n)]);
+      ++n;
     }
+    return n;
+  }
+
+  // Appends to `out` the wide node for the binary subtree of `d`, then the wide nodes below it
+  // depth-first, except that large inner children are forked into subtrees of their own
+  // (spliced in later) and named by kForkedChild words; returns its index.
+  uint32_t build_wide_node(const Divided& d, BvhWideNodes& out) {
+    std::array<Divided, kBvhWidth> kids;
+    const size_t n = size_t(gather_children(d, kids));
 
     // Fill the slots; unused ones keep empty bounds (lo = +inf, hi = −inf) and word 0.
     const uint32_t index = uint32_t(out.size());
     BvhWideNode node = BvhWideNode::without_children();
-    for (size_t i = 0; i < size_t(n); ++i) {
+    for (size_t i = 0; i < n; ++i) {
       const Box4& box = kids[i].extent.box;
       for (size_t k = 0; k < 3; ++k) {
         node.bounds[k][i] = box.lo[k];
@@ -343,7 +353,7 @@ class Builder {
     }
     out.push_back(node);
     std::deque<ForkJoinPool::Task> tasks;
-    for (size_t i = 0; i < size_t(n); ++i) {
+    for (size_t i = 0; i < n; ++i) {
       if (kids[i].leaf) continue;
       if (forks(kids[i])) {
         const std::pair<BvhWideNodes*, uint32_t> forked = new_forked_wide();
@@ -529,6 +539,11 @@ class Builder {
 
 BvhTree build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
                   const BvhBuildOptions& options) {
+  // Leaf words hold a leaf's first entry and count (BvhWideNode::leaf_word).
+  if (count > BvhWideNode::kMaxLeafPrimitives)
+    throw std::length_error("the BVH indexes at most " + std::to_string(BvhWideNode::kMaxLeafPrimitives) +
+                            " primitives; use --accel embree for this scene");
+  MJRAY_CHECK(options.max_leaf_size >= 1 && options.max_leaf_size < (1 << BvhWideNode::kCountBits));
   const int threads = resolve_thread_count(options.threads);
   Extent all;
   BuildRefs refs = make_refs(count, bounds_of, threads, all);

@@ -2,11 +2,8 @@
 /// Construction of the BVH's wide nodes by binned SAH; kept apart from traversal so that
 /// either can change without touching the other.
 
-#include <array>
 #include <cstdint>
 #include <functional>
-#include <span>
-#include <vector>
 
 #include "mjray/accel/bvh.h"
 #include "mjray/core/bounds.h"

@@ -335,11 +335,28 @@ TEST(BvhBuild, TreesCostNoMoreThanTheBinnedSahTreesOfRecord) {
   }
 }
 
+// 70k triangles without ../shared: subtrees forked and spliced, binning shared among threads.
+TEST(BvhBuild, ParallelBuildOfAScatteredWorldEqualsSerialBuild) {
+  const PrimitiveSet world = scattered_world(70000, 11);
+  const Bvh serial(world, 1);
+  for (int threads : {2, 3}) {
+    const Bvh parallel(world, threads);
+    ASSERT_EQ(serial.layout().size(), parallel.layout().size()) << threads;
+    EXPECT_EQ(std::memcmp(serial.layout().data(), parallel.layout().data(), serial.layout().size()), 0) << threads;
+  }
+}
+
 TEST(BvhBuild, OnePrimitiveIsALeafUnderARootAndNoneIsNoNode) {
   const PrimitiveSet world = scattered_world(1, 3);
   const BvhTree one = build_bvh(1, [&](uint32_t prim) { return world.primitive_bounds(prim); }, {.threads = 2});
   ASSERT_EQ(one.nodes.size(), 1u);
   EXPECT_EQ(one.nodes[0].child[0], BvhWideNode::leaf_word(0, 1));
+  EXPECT_EQ(one.bounds.lo, world.primitive_bounds(0).lo);
+  EXPECT_EQ(one.bounds.hi, world.primitive_bounds(0).hi);
+  for (size_t i = 1; i < size_t(kBvhWidth); ++i) {
+    EXPECT_EQ(one.nodes[0].child[i], 0u) << i;  // unused: word 0 and an empty box
+    EXPECT_GT(one.nodes[0].bounds[0][i], one.nodes[0].bounds[3][i]) << i;
+  }
   EXPECT_EQ(one.order, std::vector<uint32_t>{0});
   EXPECT_TRUE(build_bvh(0, [&](uint32_t prim) { return world.primitive_bounds(prim); }, {}).nodes.empty());
 }
