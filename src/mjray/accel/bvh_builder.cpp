@@ -537,7 +537,7 @@ class Builder {
 
 }  // namespace
 
-BvhTree build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
+BvhTree build_bvh(size_t count, const std::function<Bounds3(uint32_t)>& bounds_of,
                   const BvhBuildOptions& options) {
   // Leaf words hold a leaf's first entry and count (BvhWideNode::leaf_word).
   if (count > BvhWideNode::kMaxLeafPrimitives)
@@ -546,7 +546,7 @@ BvhTree build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds
   MJRAY_CHECK(options.max_leaf_size >= 1 && options.max_leaf_size < (1 << BvhWideNode::kCountBits));
   const int threads = resolve_thread_count(options.threads);
   Extent all;
-  BuildRefs refs = make_refs(count, bounds_of, threads, all);
+  BuildRefs refs = make_refs(uint32_t(count), bounds_of, threads, all);
   ForkJoinPool pool(threads);
   Builder builder(std::move(refs), options, pool);
   BvhTree tree;

@@ -2,6 +2,7 @@
 /// Construction of the BVH's wide nodes by binned SAH; kept apart from traversal so that
 /// either can change without touching the other.
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 
@@ -29,7 +30,8 @@ struct BvhBuildOptions {
 /// copy): the nodes (root first, depth-first, with room after them for the Bvh's layout of
 /// them in place), the primitive ids in leaf order (a leaf word's first and count index it),
 /// and the bounds. A binary tree is chosen by binned SAH and gathered into kBvhWidth-wide nodes
-/// as it is made. Primitives with empty or non-finite bounds are left out.
-BvhTree build_bvh(uint32_t count, const std::function<Bounds3(uint32_t)>& bounds_of, const BvhBuildOptions& options);
+/// as it is made. Primitives with empty or non-finite bounds are left out. Throws
+/// std::length_error for more than BvhWideNode::kMaxLeafPrimitives primitives.
+BvhTree build_bvh(size_t count, const std::function<Bounds3(uint32_t)>& bounds_of, const BvhBuildOptions& options);
 
 }  // namespace mjray

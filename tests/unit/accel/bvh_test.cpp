@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <algorithm>
 #include <bit>
 #include <span>
@@ -344,6 +345,16 @@ TEST(BvhBuild, ParallelBuildOfAScatteredWorldEqualsSerialBuild) {
     ASSERT_EQ(serial.layout().size(), parallel.layout().size()) << threads;
     EXPECT_EQ(std::memcmp(serial.layout().data(), parallel.layout().data(), serial.layout().size()), 0) << threads;
   }
+}
+
+// More primitives than a leaf word can index are refused before any is asked for.
+TEST(BvhBuild, TooManyPrimitivesAreRefusedBeforeAnyWork) {
+  const auto never = [](uint32_t) -> Bounds3 {
+    ADD_FAILURE() << "a primitive's bounds were asked for";
+    return {};
+  };
+  for (const size_t count : {size_t(BvhWideNode::kMaxLeafPrimitives) + 1, (size_t(1) << 32) + 1})
+    EXPECT_THROW(build_bvh(count, never, {}), std::length_error) << count;
 }
 
 TEST(BvhBuild, OnePrimitiveIsALeafUnderARootAndNoneIsNoNode) {
