@@ -5,7 +5,6 @@
 
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 
