@@ -35,7 +35,8 @@ namespace mjray {
 namespace {
 
 // The builder's binary depth stays under 64 and gathering wide nodes never deepens it; each wide
-// node pushes at most kBvhWidth − 1 entries.
+// node leaves at most kBvhWidth − 1 entries on the stack (the any-hit traversal pushes all
+// kBvhWidth and pops one at once, so it peaks one above).
 constexpr int kStackSize = (kBvhWidth - 1) * 64 + 1;
 
 // Widens the far slab distance by 2γ₃ (pbrt-v4) so rounding never culls a box the ray

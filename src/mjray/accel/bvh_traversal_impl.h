@@ -317,8 +317,15 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     const BvhWideNode& node = bvh.node(node_index);
     const unsigned mask = hit_children(node, box_ray, t_enter);
     const unsigned leaves = leaf_children(node);
-    // Start loading the inner children's nodes, then test the leaves' primitives meanwhile.
-    for (unsigned m = mask & ~leaves; m != 0; m &= m - 1) prefetch(bvh, {node.child[size_t(std::countr_zero(m))], 0});
+    // Push the inner children and start loading their nodes, then test the leaves' primitives
+    // meanwhile. One loop both pushes and loads: a loop's exit is a branch often mispredicted.
+    const unsigned inner = mask & ~leaves;
+    uint32_t last_pushed = 0;
+    for (unsigned m = inner; m != 0; m &= m - 1) {
+      last_pushed = node.child[size_t(std::countr_zero(m))];
+      prefetch(bvh, {last_pushed, 0});
+      stack[top++] = last_pushed;
+    }
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const size_t i = size_t(std::countr_zero(m));
       const LeafRun run = bvh.leaf(node.child[i]);
@@ -334,11 +341,11 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
         if (!bvh.prims->filtered(h->prim, filter->sees_opaque) || filter->blocks(*h)) return true;
       }
     }
-    // Then descend: the first inner child next, the others later.
-    unsigned inner = mask & ~leaves;
+    // Then descend into the last child pushed, kept in a register: reloading it from the stack
+    // would put a store-to-load round trip before the next node's address.
     if (inner != 0) {
-      node_index = node.child[size_t(std::countr_zero(inner))];
-      for (inner &= inner - 1; inner != 0; inner &= inner - 1) stack[top++] = node.child[size_t(std::countr_zero(inner))];
+      node_index = last_pushed;
+      --top;
       continue;
     }
     if (top == 0) return false;
