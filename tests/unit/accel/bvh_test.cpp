@@ -689,7 +689,8 @@ namespace {
 /// Records every hit it is shown and blocks none: with `sees_opaque`, every hit of the ray.
 class RecordingFilter final : public HitFilter {
  public:
-  explicit RecordingFilter(bool sees_opaque = false) : HitFilter(sees_opaque) {}
+  explicit RecordingFilter(bool sees_opaque = false, bool ignores_transmissive = false)
+      : HitFilter(sees_opaque, ignores_transmissive) {}
   bool blocks(const Hit& hit) override {
     hits.push_back(hit);
     return false;
@@ -769,6 +770,60 @@ void expect_region_lists_agree(PrimitiveSet prims, uint32_t seed) {
   // Both kinds of answer were exercised.
   EXPECT_GT(blocked, 1000);
   EXPECT_GT(crossed, 1000);
+}
+
+// The BVH's filtered occlusion query (shadow rays through glass) answers as brute force does,
+// through both traversals: blocked exactly when the ray crosses an opaque primitive, and
+// otherwise every transmissive crossing shown to the filter; a filter that sees opaque hits is
+// shown every crossing, and one that ignores transmissive hits is blocked by the opaque alone.
+// 100k rays: half from outside and inside the bounds, half leaving surfaces from their hits.
+void expect_filtered_queries_agree(PrimitiveSet prims, uint32_t seed) {
+  add_shapes(prims, 30, seed);
+  prims.transmissive_flags.assign(prims.size(), 0);
+  for (uint32_t p = 0; p < prims.size(); p += 3) prims.transmissive_flags[p] = 1;
+  const Bvh best(prims, 0), baseline(prims, 0, BvhSimd::kBaseline);
+  const BruteForce oracle(prims);
+  std::vector<Ray> rays = random_rays(prims.bounds(), 50000, seed);
+  for (uint32_t more = seed + 1; rays.size() < 100000; ++more)
+    for (const Ray& ray : surface_rays(prims, 40000, more))
+      if (rays.size() < 100000) rays.push_back(ray);
+  const Interval range{0, kInfinity};
+  int blocked = 0, crossed = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    RecordingFilter every_hit(true);
+    ASSERT_FALSE(oracle.occluded(rays[i], range, every_hit));
+    const auto& all = every_hit.hits;
+    const bool opaque = std::any_of(all.begin(), all.end(), [&](const Hit& h) { return !prims.transmissive(h.prim); });
+    for (const Bvh* bvh : {&best, &baseline}) {
+      SCOPED_TRACE(std::string(bvh->uses_avx() ? "avx" : "baseline") + " ray " + std::to_string(i));
+      RecordingFilter crossings;
+      ASSERT_EQ(bvh->occluded(rays[i], range, crossings), opaque);
+      if (!opaque) {
+        ASSERT_EQ(crossings.sorted(prims, false), every_hit.sorted(prims, false));
+      }
+      RecordingFilter every_hit_of_bvh(true);
+      ASSERT_FALSE(bvh->occluded(rays[i], range, every_hit_of_bvh));
+      ASSERT_EQ(every_hit_of_bvh.sorted(prims, true), every_hit.sorted(prims, true));
+      RecordingFilter opaque_only(false, true);
+      ASSERT_EQ(bvh->occluded(rays[i], range, opaque_only), opaque);
+    }
+    blocked += opaque;
+    crossed += !opaque && !all.empty();
+  }
+  // Both kinds of answer were exercised.
+  EXPECT_GT(blocked, 10000);
+  EXPECT_GT(crossed, 1000);
+}
+
+TEST(BvhFiltered, ShadowQueriesThroughTransmissivePrimitivesAgreeWithBruteForceOnTheTeapot) {
+  MJRAY_REQUIRE_SHARED(shared);
+  expect_filtered_queries_agree(obj_world(shared / "models/small/teapot_low_npm.obj"), 21);
+}
+
+TEST(BvhFiltered, ShadowQueriesThroughTransmissivePrimitivesAgreeWithBruteForceAmongShapes) {
+  PrimitiveSet world;
+  add_shapes(world, 90, 22);
+  expect_filtered_queries_agree(std::move(world), 23);
 }
 
 TEST(BvhRegion, ListsOfARegionsPrimitivesAnswerItsRaysAsBruteForceOnTheTeapot) {
