@@ -51,7 +51,7 @@ bool is_valid_ray(const Ray& ray, Interval t_range) {
   return is_finite(ray.origin) && is_finite(ray.direction) && t_range.max > t_range.min;
 }
 
-/// An inner node the closest-hit traversal has still to visit: its place in the layout, and
+/// A pending child: its word in the parent node (an inner node or a leaf, see BvhWideNode), and
 /// where the ray enters its box.
 struct StackEntry {
   uint32_t child;
@@ -71,9 +71,9 @@ size_t bytes_with_runs(const BvhWideNode& node) {
   return bytes;
 }
 
-// An inner child's node, and the runs that follow it, is loaded ahead in trees of at least
-// kPrefetchFrom bytes: 768 bytes (the node and some 540 bytes of its runs), measured best
-// among 256 to 768 on large meshes.
+// A pushed child's node or run, and what follows it, is loaded ahead in trees of at least
+// kPrefetchFrom bytes: 768 bytes (the node and some 540 bytes of its runs, or a run and its
+// siblings), measured best among 256 to 768 on large meshes.
 constexpr size_t kPrefetchBytes = 12 * 64;
 constexpr size_t kPrefetchFrom = size_t(256) << 10;
 
@@ -241,11 +241,11 @@ bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) c
   constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {
-    if constexpr (kQuery == BvhQuery::kClosest) return avx::traverse_closest(view, ray, t_range, hit);
+    if constexpr (kQuery == BvhQuery::kClosest) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
     else return avx::traverse_any<kFiltered>(view, ray, t_range, filter);
   }
 #endif
-  if constexpr (kQuery == BvhQuery::kClosest) return baseline::traverse_closest(view, ray, t_range, hit);
+  if constexpr (kQuery == BvhQuery::kClosest) return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
   else return baseline::traverse_any<kFiltered>(view, ray, t_range, filter);
 }
 

@@ -202,13 +202,86 @@ inline void test_leaf(const TraversalView& bvh, const WatertightRay& ray, const 
   return Hit{tri->t, prim, tri->b1, tri->b2};
 }
 
-/// Asks for an inner child's node to be loaded into the cache before it is needed, with the
-/// leaf runs that follow it in the layout, which the ray mostly tests next. Trees that stay in
-/// the cache skip this.
-inline void prefetch_node(const TraversalView& bvh, uint32_t place) {
+/// Asks for the memory of a stack entry to be loaded into the cache before it is needed: its
+/// node or its leaf's run, and what follows it in the layout (a node's runs, a run's sibling
+/// runs), which the ray mostly tests next. Trees that stay in the cache skip this.
+inline void prefetch(const TraversalView& bvh, const StackEntry& e) {
   if (!bvh.prefetches) return;
+  // The place a word names, without a branch: a node's, or a leaf's run.
+  const uint32_t place = (e.child & BvhWideNode::kLeafFlag) != 0 ? BvhWideNode::first_of(e.child) : e.child;
   const char* p = reinterpret_cast<const char*>(bvh.layout) + size_t(place) * BvhLayout::kPlaceBytes;
   for (size_t at = 0; at < kPrefetchBytes; at += 64) __builtin_prefetch(p + at);
+}
+
+/// The query kQuery for t in `t_range`: the closest hit (written to *hit), any hit, or a
+/// blocking hit (opaque, or one `filter` says blocks); returns whether there was one.
+/// Children are visited nearest entry first, and popped entries the ray cannot reach before
+/// its current nearest hit are skipped.
+template <BvhQuery kQuery>
+bool traverse(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) {
+  const float t_min = t_range.min;
+  float t_max = t_range.max;
+  BoxRay box_ray(ray, t_range);
+  const WatertightRay tri_ray(ray);
+  bool found = false;
+  StackEntry stack[kStackSize];
+  int top = 0;
+  StackEntry current{0, 0};
+  for (;;) {
+    if ((current.child & BvhWideNode::kLeafFlag) == 0) {
+      const BvhWideNode& node = bvh.node(current.child);
+      std::array<float, kBvhWidth> t_enter;
+      unsigned mask = hit_children(node, box_ray, t_enter);
+      if (mask != 0) {
+        const auto entry = [&](int i) { return StackEntry{node.child[size_t(i)], t_enter[size_t(i)]}; };
+        current = entry(std::countr_zero(mask));
+        prefetch(bvh, current);
+        mask &= mask - 1;
+        // Keep the nearest as `current`; the rest go on the stack sorted so that nearer
+        // ones are popped first (insertion into the few entries pushed here).
+        const int base = top;
+        for (; mask != 0; mask &= mask - 1) {
+          StackEntry e = entry(std::countr_zero(mask));
+          // Start loading what the entry points to: it, or the current one it may displace,
+          // is searched after the current one.
+          prefetch(bvh, e);
+          if (e.t_enter < current.t_enter) std::swap(e, current);
+          int j = top++;
+          for (; j > base && stack[j - 1].t_enter < e.t_enter; --j) stack[j] = stack[j - 1];
+          stack[j] = e;
+        }
+        continue;
+      }
+    } else {
+      const LeafRun run = bvh.leaf(current.child);
+      // Once something is hit, a primitive at exactly the same t may still win: the lower
+      // primitive id does, as with every accelerator.
+      const auto reach = [&] { return found ? next_float(t_max, true) : t_max; };
+      LeafLanes lanes;
+      test_leaf(bvh, tri_ray, run, {t_min, reach()}, lanes);
+      for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
+        const auto i = uint32_t(std::countr_zero(m));
+        const auto found_hit = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, i, {t_min, reach()});
+        if (!found_hit) continue;
+        const Hit& h = *found_hit;
+        if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
+        if constexpr (kQuery == BvhQuery::kAny) return true;
+        if constexpr (kQuery == BvhQuery::kFiltered) {
+          if (!bvh.prims->filtered(h.prim, filter->sees_opaque) || filter->blocks(h)) return true;
+          continue;
+        }
+        t_max = h.t;
+        box_ray.set_t_max(t_max);
+        *hit = h;
+        found = true;
+      }
+    }
+    // Pop the next entry the ray can still reach before its nearest hit.
+    do {
+      if (top == 0) return found;
+      current = stack[--top];
+    } while (current.t_enter > t_max * kFarScale);
+  }
 }
 
 /// The leaf children of a node: the top bits of its child words.
@@ -225,78 +298,6 @@ inline unsigned leaf_children(const BvhWideNode& node) {
   for (size_t i = 0; i < kBvhWidth; ++i) mask |= unsigned(node.is_leaf(i)) << i;
   return mask;
 #endif
-}
-
-/// The nearest hit for t in `t_range`, written to *hit; returns whether there was one.
-/// A node's hit leaves are tested first, as their runs follow it in the layout and arrive with
-/// it, and may shorten the ray before its inner children are ordered; so the stack holds only
-/// nodes, nearest on top, and the loop never asks whether the next entry is a leaf. Entries the
-/// ray cannot reach before its current nearest hit are skipped.
-inline bool traverse_closest(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
-  const float t_min = t_range.min;
-  float t_max = t_range.max;
-  BoxRay box_ray(ray, t_range);
-  const WatertightRay tri_ray(ray);
-  bool found = false;
-  // Once something is hit, a primitive at exactly the same t may still win: the lower
-  // primitive id does, as with every accelerator.
-  const auto reach = [&] { return found ? next_float(t_max, true) : t_max; };
-  const auto reachable = [&](float t_enter) { return t_enter <= t_max * kFarScale; };
-  StackEntry stack[kStackSize];
-  int top = 0;
-  uint32_t node_place = 0;  // the root's
-  for (;;) {
-    const BvhWideNode& node = bvh.node(node_place);
-    std::array<float, kBvhWidth> t_enter;
-    const unsigned mask = hit_children(node, box_ray, t_enter);
-    const unsigned leaves = leaf_children(node);
-    unsigned inner = mask & ~leaves;
-    // Start loading the inner children's nodes, then test the leaves meanwhile.
-    for (unsigned m = inner; m != 0; m &= m - 1) prefetch_node(bvh, node.child[size_t(std::countr_zero(m))]);
-    for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
-      const auto c = size_t(std::countr_zero(m));
-      if (!reachable(t_enter[c])) continue;
-      const LeafRun run = bvh.leaf(node.child[c]);
-      LeafLanes lanes;
-      test_leaf(bvh, tri_ray, run, {t_min, reach()}, lanes);
-      for (unsigned e = lanes.hits | lanes.full_test; e != 0; e &= e - 1) {
-        const auto i = uint32_t(std::countr_zero(e));
-        const auto found_hit = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, i, {t_min, reach()});
-        if (!found_hit) continue;
-        const Hit& h = *found_hit;
-        if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
-        t_max = h.t;
-        box_ray.set_t_max(t_max);
-        *hit = h;
-        found = true;
-      }
-    }
-    if (inner != 0) {
-      // Descend into the nearest inner child; the rest go on the stack sorted so that nearer
-      // ones are popped first (insertion into the few entries pushed here).
-      const auto entry = [&](int i) { return StackEntry{node.child[size_t(i)], t_enter[size_t(i)]}; };
-      StackEntry nearest = entry(std::countr_zero(inner));
-      const int base = top;
-      for (inner &= inner - 1; inner != 0; inner &= inner - 1) {
-        StackEntry e = entry(std::countr_zero(inner));
-        if (e.t_enter < nearest.t_enter) std::swap(e, nearest);
-        int j = top++;
-        for (; j > base && stack[j - 1].t_enter < e.t_enter; --j) stack[j] = stack[j - 1];
-        stack[j] = e;
-      }
-      if (reachable(nearest.t_enter)) {
-        node_place = nearest.child;
-        continue;
-      }
-    }
-    // Pop the next node the ray can still reach before its nearest hit.
-    StackEntry next;
-    do {
-      if (top == 0) return found;
-      next = stack[--top];
-    } while (!reachable(next.t_enter));
-    node_place = next.child;
-  }
 }
 
 /// Any blocking hit for t in `t_range` (an opaque primitive, or a transmissive one `filter`
@@ -322,7 +323,7 @@ bool traverse_any(const TraversalView& bvh, const Ray& ray, Interval t_range, Hi
     uint32_t last_pushed = 0;
     for (unsigned m = inner; m != 0; m &= m - 1) {
       last_pushed = node.child[size_t(std::countr_zero(m))];
-      prefetch_node(bvh, last_pushed);
+      prefetch(bvh, {last_pushed, 0});
       stack[top++] = last_pushed;
     }
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
