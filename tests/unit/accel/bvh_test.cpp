@@ -707,14 +707,24 @@ class RecordingFilter final : public HitFilter {
   std::vector<Hit> hits;
 };
 
+// Adds 30 shapes to `prims` and makes every third primitive transmissive, as glass is.
+void add_glass_shapes(PrimitiveSet& prims, uint32_t seed) {
+  add_shapes(prims, 30, seed);
+  prims.transmissive_flags.assign(prims.size(), 0);
+  for (uint32_t p = 0; p < prims.size(); p += 3) prims.transmissive_flags[p] = 1;
+}
+
+// Whether any of a ray's hits is on an opaque primitive: then a shadow ray is blocked.
+bool crosses_opaque(const PrimitiveSet& prims, const std::vector<Hit>& hits) {
+  return std::any_of(hits.begin(), hits.end(), [&](const Hit& h) { return !prims.transmissive(h.prim); });
+}
+
 // The shadow rays of one light region, tested against the BVH's list of the region's
 // primitives, answer as brute force over every primitive does: closest hit, any hit, and the
 // transmissive crossings a filter sees. Over 100k rays per mesh, through lists of up to 24.
 // Brute force runs once per ray, showing every hit to a filter; each answer is read from it.
 void expect_region_lists_agree(PrimitiveSet prims, uint32_t seed) {
-  add_shapes(prims, 30, seed);
-  prims.transmissive_flags.assign(prims.size(), 0);
-  for (uint32_t p = 0; p < prims.size(); p += 3) prims.transmissive_flags[p] = 1;
+  add_glass_shapes(prims, seed);
   const Bvh bvh(prims, 0);
   const BruteForce oracle(prims);
   const Bounds3 b = prims.bounds();
@@ -754,7 +764,7 @@ void expect_region_lists_agree(PrimitiveSet prims, uint32_t seed) {
         ASSERT_EQ(got->v, nearest->v);
       }
       ASSERT_EQ(list.occluded(ray, t_max), !all.empty());
-      const bool opaque = std::any_of(all.begin(), all.end(), [&](const Hit& h) { return !prims.transmissive(h.prim); });
+      const bool opaque = crosses_opaque(prims, all);
       RecordingFilter crossings;
       ASSERT_EQ(list.occluded(ray, {0, t_max}, crossings), opaque);
       RecordingFilter every_hit_of_list(true);
@@ -778,9 +788,7 @@ void expect_region_lists_agree(PrimitiveSet prims, uint32_t seed) {
 // shown every crossing, and one that ignores transmissive hits is blocked by the opaque alone.
 // 100k rays: half from outside and inside the bounds, half leaving surfaces from their hits.
 void expect_filtered_queries_agree(PrimitiveSet prims, uint32_t seed) {
-  add_shapes(prims, 30, seed);
-  prims.transmissive_flags.assign(prims.size(), 0);
-  for (uint32_t p = 0; p < prims.size(); p += 3) prims.transmissive_flags[p] = 1;
+  add_glass_shapes(prims, seed);
   const Bvh best(prims, 0), baseline(prims, 0, BvhSimd::kBaseline);
   const BruteForce oracle(prims);
   std::vector<Ray> rays = random_rays(prims.bounds(), 50000, seed);
@@ -793,7 +801,7 @@ void expect_filtered_queries_agree(PrimitiveSet prims, uint32_t seed) {
     RecordingFilter every_hit(true);
     ASSERT_FALSE(oracle.occluded(rays[i], range, every_hit));
     const auto& all = every_hit.hits;
-    const bool opaque = std::any_of(all.begin(), all.end(), [&](const Hit& h) { return !prims.transmissive(h.prim); });
+    const bool opaque = crosses_opaque(prims, all);
     for (const Bvh* bvh : {&best, &baseline}) {
       SCOPED_TRACE(std::string(bvh->uses_avx() ? "avx" : "baseline") + " ray " + std::to_string(i));
       RecordingFilter crossings;
