@@ -241,12 +241,14 @@ bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) c
   constexpr bool kFiltered = kQuery == BvhQuery::kFiltered;
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {
-    if constexpr (kQuery == BvhQuery::kClosest) return avx::traverse<kQuery>(view, ray, t_range, hit, filter);
-    else return avx::traverse_any<kFiltered>(view, ray, t_range, filter);
+    if constexpr (kQuery != BvhQuery::kClosest) return avx::traverse_any<kFiltered>(view, ray, t_range, filter);
+    else if (view.only_triangles) return avx::traverse_closest_leaves_first(view, ray, t_range, hit);
+    else return avx::traverse_closest(view, ray, t_range, hit);
   }
 #endif
-  if constexpr (kQuery == BvhQuery::kClosest) return baseline::traverse<kQuery>(view, ray, t_range, hit, filter);
-  else return baseline::traverse_any<kFiltered>(view, ray, t_range, filter);
+  if constexpr (kQuery != BvhQuery::kClosest) return baseline::traverse_any<kFiltered>(view, ray, t_range, filter);
+  else if (view.only_triangles) return baseline::traverse_closest_leaves_first(view, ray, t_range, hit);
+  else return baseline::traverse_closest(view, ray, t_range, hit);
 }
 
 std::optional<Hit> Bvh::intersect(const Ray& ray, Interval t_range) const {
