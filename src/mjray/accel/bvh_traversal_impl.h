@@ -228,8 +228,9 @@ struct NearestSoFar {
 
 /// Tests a leaf run's entries for hits nearer than `so_far`'s, keeping the nearest and cutting
 /// the box ray's range at it. Always inlined, so that the nearest hit stays in registers.
-[[gnu::always_inline]] inline void nearest_in_leaf(const TraversalView& bvh, const Ray& ray, const WatertightRay& tri_ray, const LeafRun& run,
-                            float t_min, BoxRay& box_ray, NearestSoFar& so_far) {
+[[gnu::always_inline]] inline void nearest_in_leaf(const TraversalView& bvh, const Ray& ray,
+                                                   const WatertightRay& tri_ray, const LeafRun& run, float t_min,
+                                                   BoxRay& box_ray, NearestSoFar& so_far) {
   LeafLanes lanes;
   test_leaf(bvh, tri_ray, run, {t_min, so_far.reach()}, lanes);
   for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
