@@ -242,12 +242,10 @@ bool Bvh::trace(const Ray& ray, Interval t_range, Hit* hit, HitFilter* filter) c
 #if MJRAY_BVH_HAS_AVX
   if (use_avx_) {
     if constexpr (kQuery != BvhQuery::kClosest) return avx::traverse_any<kFiltered>(view, ray, t_range, filter);
-    else if (view.only_triangles) return avx::traverse_closest_leaves_first(view, ray, t_range, hit);
     else return avx::traverse_closest(view, ray, t_range, hit);
   }
 #endif
   if constexpr (kQuery != BvhQuery::kClosest) return baseline::traverse_any<kFiltered>(view, ray, t_range, filter);
-  else if (view.only_triangles) return baseline::traverse_closest_leaves_first(view, ray, t_range, hit);
   else return baseline::traverse_closest(view, ray, t_range, hit);
 }
 

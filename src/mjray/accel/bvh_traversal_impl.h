@@ -213,48 +213,53 @@ inline void prefetch(const TraversalView& bvh, const StackEntry& e) {
   for (size_t at = 0; at < kPrefetchBytes; at += 64) __builtin_prefetch(p + at);
 }
 
-/// The nearest hit a closest-hit traversal has found so far, and how far the ray still reaches.
-struct NearestSoFar {
+/// What a closest-hit traversal carries for one ray: the ray as the box and triangle tests take
+/// it, and the nearest hit so far.
+struct NearestSearch {
+  const TraversalView& bvh;
+  const Ray& ray;
+  BoxRay box_ray;
+  const WatertightRay tri_ray;
+  const float t_min;
   float t_max;
   Hit* hit;
   bool found = false;
+
+  NearestSearch(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit)
+      : bvh(bvh), ray(ray), box_ray(ray, t_range), tri_ray(ray), t_min(t_range.min), t_max(t_range.max), hit(hit) {}
 
   /// Once something is hit, a primitive at exactly the same t may still win: the lower
   /// primitive id does, as with every accelerator.
   float reach() const { return found ? next_float(t_max, true) : t_max; }
   /// Whether a box the ray enters at `t_enter` may hold something nearer.
   bool reachable(float t_enter) const { return t_enter <= t_max * kFarScale; }
+
+  /// Tests a leaf run's entries for hits nearer than the nearest so far, keeping the nearest
+  /// and cutting the box ray's range at it. Always inlined, so that the search stays in
+  /// registers.
+  [[gnu::always_inline]] void test(const LeafRun& run) {
+    LeafLanes lanes;
+    test_leaf(bvh, tri_ray, run, {t_min, reach()}, lanes);
+    for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
+      const auto i = uint32_t(std::countr_zero(m));
+      const auto found_hit = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, i, {t_min, reach()});
+      if (!found_hit) continue;
+      const Hit& h = *found_hit;
+      if (found && (h.t > t_max || (h.t == t_max && h.prim > hit->prim))) continue;
+      t_max = h.t;
+      box_ray.set_t_max(h.t);
+      *hit = h;
+      found = true;
+    }
+  }
 };
 
-/// Tests a leaf run's entries for hits nearer than `so_far`'s, keeping the nearest and cutting
-/// the box ray's range at it. Always inlined, so that the nearest hit stays in registers.
-[[gnu::always_inline]] inline void nearest_in_leaf(const TraversalView& bvh, const Ray& ray,
-                                                   const WatertightRay& tri_ray, const LeafRun& run, float t_min,
-                                                   BoxRay& box_ray, NearestSoFar& so_far) {
-  LeafLanes lanes;
-  test_leaf(bvh, tri_ray, run, {t_min, so_far.reach()}, lanes);
-  for (unsigned m = lanes.hits | lanes.full_test; m != 0; m &= m - 1) {
-    const auto i = uint32_t(std::countr_zero(m));
-    const auto found_hit = leaf_entry_hit(bvh, ray, tri_ray, run, lanes, i, {t_min, so_far.reach()});
-    if (!found_hit) continue;
-    const Hit& h = *found_hit;
-    if (so_far.found && (h.t > so_far.t_max || (h.t == so_far.t_max && h.prim > so_far.hit->prim))) continue;
-    so_far.t_max = h.t;
-    box_ray.set_t_max(h.t);
-    *so_far.hit = h;
-    so_far.found = true;
-  }
-}
-
-/// The nearest hit for t in `t_range`, written to *hit; returns whether there was one. Leaves
-/// are stack entries like nodes: every child is visited nearest entry first, so a leaf farther
-/// than a hit found in a nearer node is never tested. Trees with shapes use this, since a
-/// shape's test costs more than a triangle's and a large shape (a floor) sits near the root.
-/// Popped entries the ray cannot reach before its current nearest hit are skipped.
-inline bool traverse_closest(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
-  BoxRay box_ray(ray, t_range);
-  const WatertightRay tri_ray(ray);
-  NearestSoFar so_far{t_range.max, hit};
+/// traverse_closest in a tree with shapes. Leaves are stack entries like nodes: every child is
+/// visited nearest entry first, so a leaf farther than a hit found in a nearer node is never
+/// tested; a shape's test costs more than a triangle's, and a large shape (a floor) sits near
+/// the root. Popped entries the ray cannot reach before its current nearest hit are skipped.
+inline bool traverse_closest_nearest_first(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
+  NearestSearch search(bvh, ray, t_range, hit);
   StackEntry stack[kStackSize];
   int top = 0;
   StackEntry current{0, 0};
@@ -262,7 +267,7 @@ inline bool traverse_closest(const TraversalView& bvh, const Ray& ray, Interval 
     if ((current.child & BvhWideNode::kLeafFlag) == 0) {
       const BvhWideNode& node = bvh.node(current.child);
       std::array<float, kBvhWidth> t_enter;
-      unsigned mask = hit_children(node, box_ray, t_enter);
+      unsigned mask = hit_children(node, search.box_ray, t_enter);
       if (mask != 0) {
         const auto entry = [&](int i) { return StackEntry{node.child[size_t(i)], t_enter[size_t(i)]}; };
         current = entry(std::countr_zero(mask));
@@ -284,13 +289,13 @@ inline bool traverse_closest(const TraversalView& bvh, const Ray& ray, Interval 
         continue;
       }
     } else {
-      nearest_in_leaf(bvh, ray, tri_ray, bvh.leaf(current.child), t_range.min, box_ray, so_far);
+      search.test(bvh.leaf(current.child));
     }
     // Pop the next entry the ray can still reach before its nearest hit.
     do {
-      if (top == 0) return so_far.found;
+      if (top == 0) return search.found;
       current = stack[--top];
-    } while (!so_far.reachable(current.t_enter));
+    } while (!search.reachable(current.t_enter));
   }
 }
 
@@ -310,29 +315,26 @@ inline unsigned leaf_children(const BvhWideNode& node) {
 #endif
 }
 
-/// The nearest hit for t in `t_range`, as traverse_closest finds it, in a tree of triangles
-/// only. A node's hit leaves are tested at once, while its inner children's nodes load: their
-/// runs follow the node in the layout and arrive with it, and a hit there may cull the inner
+/// traverse_closest in a tree of triangles only, with the same hits as the nearest-first loop.
+/// A node's hit leaves are tested at once, while its inner children's nodes load: their runs
+/// follow the node in the layout and arrive with it, and a hit there may cull the inner
 /// children before they are ordered. So the stack holds only nodes, fewer entries a node are
 /// sorted, and the loop never asks whether the next entry is a leaf.
 inline bool traverse_closest_leaves_first(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
-  BoxRay box_ray(ray, t_range);
-  const WatertightRay tri_ray(ray);
-  NearestSoFar so_far{t_range.max, hit};
+  NearestSearch search(bvh, ray, t_range, hit);
   StackEntry stack[kStackSize];
   int top = 0;
   uint32_t node_place = 0;  // the root's
   for (;;) {
     const BvhWideNode& node = bvh.node(node_place);
     std::array<float, kBvhWidth> t_enter;
-    const unsigned mask = hit_children(node, box_ray, t_enter);
+    const unsigned mask = hit_children(node, search.box_ray, t_enter);
     const unsigned leaves = leaf_children(node);
     unsigned inner = mask & ~leaves;
     for (unsigned m = inner; m != 0; m &= m - 1) prefetch(bvh, {node.child[size_t(std::countr_zero(m))], 0});
     for (unsigned m = mask & leaves; m != 0; m &= m - 1) {
       const auto c = size_t(std::countr_zero(m));
-      if (so_far.reachable(t_enter[c]))
-        nearest_in_leaf(bvh, ray, tri_ray, bvh.leaf(node.child[c]), t_range.min, box_ray, so_far);
+      if (search.reachable(t_enter[c])) search.test(bvh.leaf(node.child[c]));
     }
     if (inner != 0) {
       // Descend into the nearest inner child; the rest go on the stack sorted so that nearer
@@ -347,7 +349,7 @@ inline bool traverse_closest_leaves_first(const TraversalView& bvh, const Ray& r
         for (; j > base && stack[j - 1].t_enter < e.t_enter; --j) stack[j] = stack[j - 1];
         stack[j] = e;
       }
-      if (so_far.reachable(nearest.t_enter)) {
+      if (search.reachable(nearest.t_enter)) {
         node_place = nearest.child;
         continue;
       }
@@ -355,11 +357,18 @@ inline bool traverse_closest_leaves_first(const TraversalView& bvh, const Ray& r
     // Pop the next node the ray can still reach before its nearest hit.
     StackEntry next;
     do {
-      if (top == 0) return so_far.found;
+      if (top == 0) return search.found;
       next = stack[--top];
-    } while (!so_far.reachable(next.t_enter));
+    } while (!search.reachable(next.t_enter));
     node_place = next.child;
   }
+}
+
+/// The nearest hit for t in `t_range`, written to *hit; returns whether there was one. The
+/// loop depends on the tree: leaves first where it holds triangles only.
+inline bool traverse_closest(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit) {
+  return bvh.only_triangles ? traverse_closest_leaves_first(bvh, ray, t_range, hit)
+                            : traverse_closest_nearest_first(bvh, ray, t_range, hit);
 }
 
 /// Any blocking hit for t in `t_range` (an opaque primitive, or a transmissive one `filter`
