@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "mjray/core/error.h"
+#include "mjray/io/atomic_file.h"
 
 extern char** environ;
 
@@ -116,10 +117,7 @@ void check_video_output(const fs::path& video, const std::vector<fs::path>& fram
       throw OutputError(prefix + "its frames must share one size, and '" + frames[0].string() + "' is " + sizes[0] +
                         " but '" + frames[i].string() + "' is " + sizes[i]);
   }
-  const fs::path folder = video.has_parent_path() ? video.parent_path() : fs::path(".");
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec)) throw OutputError(prefix + "folder '" + folder.string() + "' does not exist");
-  if (::access(folder.c_str(), W_OK) != 0) throw OutputError(prefix + "folder '" + folder.string() + "' is not writable");
+  check_writable_place(video);
 }
 
 void encode_video(const std::vector<fs::path>& frames, const fs::path& video, int fps) {

@@ -129,6 +129,36 @@ TEST_F(HardeningOutput, FullDiskKeepsThePreviousImage) {
   EXPECT_EQ(listing(), "out.ppm scene.lua");  // no temporary file left
 }
 
+TEST_F(HardeningOutput, AnOutdirOnAReadOnlyFileSystemIsRefusedBeforeRendering) {
+  // A read-only tmpfs mounted in a user namespace of its own: no root needed, and the
+  // permission bits cannot hide the problem from a root user.
+  if (std::system("unshare -rm true >/dev/null 2>&1") != 0) GTEST_SKIP() << "no user namespaces here (unshare -rm)";
+  const auto scene = write("scene.lua", lit_sphere("'out.png'", 64));
+  const fs::path mount = dir_ / "ro";
+  fs::create_directory(mount);
+  const fs::path err = logs_ / "ro-stderr.txt";
+  const std::string inner = "mount -t tmpfs -o ro tmpfs " + shell_quoted(mount.string()) + " && exec " +
+                            shell_quoted(test::mjray_binary().string()) + " --quiet --outdir " +
+                            shell_quoted(mount.string()) + " " + shell_quoted(scene.string());
+  const int status = std::system(("unshare -rm sh -c " + shell_quoted(inner) + " 2>" + shell_quoted(err.string())).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_EQ(test::read_file(err), "mjray: error: cannot write '" + (mount / "out.png").string() + "': folder '" +
+                                      mount.string() + "' is not writable: Read-only file system\n");
+}
+
+TEST_F(HardeningOutput, ANameWithoutRoomForItsResumeStateIsRefusedBeforeRendering) {
+  // 250 bytes fit the file system; "<name>.mjray-state", which an interrupt writes, does not.
+  const std::string name = std::string(246, 'n') + ".png";
+  const auto scene = write("scene.lua", lit_sphere("'" + name + "'", 64));
+  const RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + at(5) + ": gr.render: cannot write '" + (dir_ / name).string() +
+                       ".mjray-state': its name is 262 bytes long, and the file system of '" + dir_.string() +
+                       "' takes at most 255 (the resume state that an interrupted render writes beside its image)\n");
+  EXPECT_EQ(listing(), "scene.lua");
+}
+
 TEST_F(HardeningOutput, MissingOutputFolderIsAClearErrorAndWritesNothing) {
   const auto scene = write("scene.lua", lit_sphere("'absent/out.png'"));
   const RunResult r = run({scene.string()});

@@ -70,11 +70,6 @@ void check_image_output_format(const fs::path& path, const EncodeOptions& option
   if (const std::string reason = codec.unsupported(options); !reason.empty()) fail_write(path, reason);
 }
 
-void check_image_output(const fs::path& path, const EncodeOptions& options) {
-  check_image_output_format(path, options);
-  check_writable_place(path);
-}
-
 void write_image(const Image& image, const fs::path& path, const EncodeOptions& options) {
   // Choose the format before touching the disk.
   const ImageCodec& codec = codec_for(path);

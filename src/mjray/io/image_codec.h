@@ -35,10 +35,6 @@ std::string writable_extensions();
 /// naming the path.
 void check_image_output_format(const std::filesystem::path& path, const EncodeOptions& options);
 
-/// Checks before a render that an image can go to `path` with `options`: the format (above),
-/// an existing, writable folder, and no folder of that name. Throws OutputError naming the path.
-void check_image_output(const std::filesystem::path& path, const EncodeOptions& options);
-
 /// Encodes the image with its path's codec and writes it atomically (see
 /// write_file_atomically). Throws OutputError("cannot write 'PATH': REASON").
 void write_image(const Image& image, const std::filesystem::path& path, const EncodeOptions& options = {});

@@ -1,9 +1,12 @@
 #include "mjray/job/job_outputs.h"
 
 #include <map>
+#include <set>
 #include <system_error>
 
+#include "mjray/io/atomic_file.h"
 #include "mjray/io/image_codec.h"
+#include "mjray/render/render_checkpoint.h"
 
 namespace mjray {
 namespace fs = std::filesystem;
@@ -47,6 +50,27 @@ void check_confined(const SceneDescription& scene, size_t index, const fs::path&
                        "--output or --outdir, or run mjray with --unsafe-lua to allow it)");
 }
 
+/// Every folder an image goes to takes a new file now (made and removed), and every name the
+/// render will create there fits its file system: the image's and its resume state's.
+void check_places(const SceneDescription& scene, const OutputOptions& options, const std::vector<size_t>& jobs) {
+  std::set<fs::path> probed;
+  for (const size_t i : jobs) {
+    const fs::path path = output_path(scene, i, options);
+    try {
+      if (probed.insert(resolved(path).parent_path()).second) check_writable_place(path);
+      check_name_fits(path);
+      try {
+        check_name_fits(checkpoint_path(path));
+      } catch (const OutputError& e) {
+        throw OutputError(std::string(e.what()) + " (the resume state that an interrupted render writes beside its image)");
+      }
+    } catch (const OutputError& e) {
+      if (!options.output && !options.outdir) throw SceneError(scene.jobs[i].where, std::string("gr.render: ") + e.what());
+      throw;
+    }
+  }
+}
+
 }  // namespace
 
 fs::path output_path(const SceneDescription& scene, size_t index, const OutputOptions& options) {
@@ -78,17 +102,15 @@ std::vector<std::string> check_outputs(const SceneDescription& scene, const Outp
     }
     try {
       if (options.confine_script_outputs) check_confined(scene, i, path);
-      check_image_output(path, options.encoding);
+      check_image_output_format(path, options.encoding);
     } catch (const OutputError& e) {
       throw SceneError(scene.jobs[i].where, std::string("gr.render: ") + e.what());
     }
   }
   // Folders named on the command line are made once every other check has passed.
   if (options.outdir) create_folder(*options.outdir, "cannot create the output folder '" + options.outdir->string() + "': ");
-  if (options.output) {
-    create_folder_of(*options.output);
-    check_image_output(*options.output, options.encoding);
-  }
+  if (options.output) create_folder_of(*options.output);
+  check_places(scene, options, jobs);
 
   std::vector<std::string> warnings;
   std::map<fs::path, size_t> first_writer;

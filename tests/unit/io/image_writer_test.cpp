@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include "mjray/core/error.h"
+#include "mjray/io/atomic_file.h"
 #include "mjray/io/png_codec.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
@@ -43,7 +44,7 @@ std::vector<std::string> file_names(const fs::path& dir) {
 
 bool has_temp_file(const fs::path& dir) {
   for (const auto& name : file_names(dir))
-    if (name.find(".tmp-") != std::string::npos) return true;
+    if (name.find(".tmp") != std::string::npos) return true;
   return false;
 }
 
@@ -391,6 +392,73 @@ TEST(ImageWriterFailure, FailedRenameRemovesTemp) {
       << message;
   EXPECT_TRUE(fs::is_directory(path));
   EXPECT_FALSE(has_temp_file(dir));
+}
+
+TEST(ImageWriterTemporaries, PlantedLinksCannotRedirectTheWrite) {
+  // A scene folder that ships links where a temporary might be named must not get its bytes
+  // written through them: every name a writer could have used before (<name>.tmp-<pid>) and a
+  // link in every temporary-looking place point at a file outside.
+  const fs::path dir = test::make_temp_dir("planted-links");
+  const fs::path outside = test::make_temp_dir("planted-links-victim") / "victim.sh";
+  std::ofstream(outside) << "#!/bin/sh\necho untouched\n";
+  const auto victim_before = read_bytes(outside);
+  const fs::path path = dir / "x.ppm";
+  for (pid_t pid = std::max<pid_t>(1, ::getpid() - 50); pid < ::getpid() + 200; ++pid)
+    fs::create_symlink(outside, dir / ("x.ppm.tmp-" + std::to_string(pid)));
+  fs::create_symlink(outside, dir / ".mjray-0000000000000000.tmp");
+  write_image(distinct_image(), path);
+  expect_same_pixels(distinct_image(), read_image(path));
+  EXPECT_FALSE(fs::is_symlink(path));
+  EXPECT_EQ(read_bytes(outside), victim_before);
+  size_t links = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) links += entry.is_symlink();
+  EXPECT_EQ(links, 251u);
+  EXPECT_EQ(file_names(dir).size(), 252u);  // the links and the image: no temporary left
+}
+
+TEST(ImageWriterTemporaries, ALinkAtTheTargetIsReplacedNotFollowed) {
+  const fs::path dir = test::make_temp_dir("target-link");
+  const fs::path outside = test::make_temp_dir("target-link-victim") / "victim.txt";
+  std::ofstream(outside) << "keep me\n";
+  fs::create_symlink(outside, dir / "out.png");
+  write_image(distinct_image(), dir / "out.png");
+  EXPECT_FALSE(fs::is_symlink(dir / "out.png"));
+  expect_same_pixels(distinct_image(), read_image(dir / "out.png"));
+  EXPECT_EQ(read_bytes(outside), (std::vector<uint8_t>{'k', 'e', 'e', 'p', ' ', 'm', 'e', '\n'}));
+}
+
+TEST(ImageWriterPlace, ANameTooLongForTheFileSystemIsRefusedBeforeWriting) {
+  const fs::path dir = test::make_temp_dir("long-name");
+  const long most = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+  ASSERT_GT(most, 20);
+  const fs::path fits = dir / (std::string(size_t(most) - 4, 'a') + ".png");
+  EXPECT_NO_THROW(check_writable_place(fits));
+  // The image's name fits, but its resume state's ("<image>.mjray-state") would not.
+  try {
+    check_name_fits(fits.string() + ".mjray-state");
+    FAIL() << "expected OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("takes at most " + std::to_string(most)), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(check_writable_place(dir / (std::string(size_t(most), 'b') + ".png")), OutputError);
+  EXPECT_TRUE(file_names(dir).empty());
+}
+
+TEST(ImageWriterPlace, AFolderThatTakesNoFilesIsFoundBeforeWriting) {
+  const fs::path dir = test::make_temp_dir("place-read-only");
+  ASSERT_EQ(::chmod(dir.c_str(), 0555), 0);
+  if (::access(dir.c_str(), W_OK) == 0) {
+    ::chmod(dir.c_str(), 0755);
+    GTEST_SKIP() << "permissions are not enforced for this user (root)";
+  }
+  std::string message;
+  try {
+    check_writable_place(dir / "out.png");
+  } catch (const OutputError& e) {
+    message = e.what();
+  }
+  ::chmod(dir.c_str(), 0755);
+  EXPECT_NE(message.find("is not writable: Permission denied"), std::string::npos) << message;
 }
 
 TEST(ImageWriterFailure, OverwriteReplacesContent) {
