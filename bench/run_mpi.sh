@@ -71,7 +71,7 @@ for name in $SCENES; do
         cmd=("${MPIRUN[@]}" -np "$ranks" "$BUILD/mjray-mpi")
       fi
       start=$EPOCHREALTIME
-      /usr/bin/time -f '%U %S' -o "$TMP/time" "${cmd[@]}" --quiet -j "$threads" "${opts[@]}" --outdir "$TMP/out" --stats-json "$TMP/stats.json" "$scene" \
+      /usr/bin/time -f '%U %S' -o "$TMP/time" "${cmd[@]}" --quiet --allow-read "$SHARED/models" -j "$threads" "${opts[@]}" --outdir "$TMP/out" --stats-json "$TMP/stats.json" "$scene" \
         >/dev/null 2>"$TMP/stderr"
       status=$?
       end=$EPOCHREALTIME

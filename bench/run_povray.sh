@@ -104,7 +104,7 @@ timed() {
 for scene in $SCENES; do
   for ((k = 1; k <= REPEAT; k++)); do
     # shellcheck disable=SC2046
-    timed "$scene" mjray "$k" "$MJRAY" --quiet --outdir "$TMP" -j "$THREADS" $(mjray_options "$scene") \
+    timed "$scene" mjray "$k" "$MJRAY" --quiet --allow-read "$SHARED/models" --outdir "$TMP" -j "$THREADS" $(mjray_options "$scene") \
       "$SHARED/bench/${scene%-t0.3}.lua"
     # shellcheck disable=SC2046
     (cd "$POVDIR" && timed "$scene" povray "$k" povray "+I${scene%-t0.3}.pov" "+O${scene%-t0.3}.png" \

@@ -75,7 +75,7 @@ run() {
     rm -f "$TMP/stats.json"
     idle=$(python3 "$ROOT/bench/results.py" idle "$WAIT_IDLE")
     start=$EPOCHREALTIME
-    /usr/bin/time -f '%U %S' -o "$TMP/time" timeout "$LIMIT" "$MJRAY" --quiet --outdir "$TMP" \
+    /usr/bin/time -f '%U %S' -o "$TMP/time" timeout "$LIMIT" "$MJRAY" --quiet --allow-read "$SHARED/models" --outdir "$TMP" \
       --stats-json "$TMP/stats.json" -j "$threads" "$@" "$scene" >/dev/null 2>"$TMP/stderr"
     status=$?
     end=$EPOCHREALTIME

@@ -208,6 +208,11 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
        }},
       {"--caustics", [&](auto& o, auto& v) { cl.caustic_photons = parse_photon_count(o, v); }},
       {"--gi", [&](auto& o, auto& v) { cl.global_photons = parse_photon_count(o, v); }},
+      {"--allow-read", [&](auto& o, auto& v) {
+         std::error_code ec;
+         if (!std::filesystem::is_directory(v, ec)) throw UsageError(o + " expects a folder, and '" + v + "' is not one");
+         cl.load.allowed_read_folders.push_back(std::filesystem::absolute(v));
+       }},
       {"--output", [&](auto&, auto& v) { cl.output = v; }},
       {"--outdir", [&](auto&, auto& v) { cl.outdir = v; }},
       {"--stats-json", [&](auto&, auto& v) { cl.stats_json = v; }},
@@ -419,6 +424,8 @@ options:
                        resume the interrupted one, render the rest
   --unsafe-lua         give the script the full Lua standard library and let it write images
                        outside the scene's folder and the working directory
+  --allow-read DIR     let the script read files in DIR and its subfolders too (besides its own
+                       folder's tree and the working directory's); may be given several times
   --lua-memory SIZE    most memory the script's Lua state may use, e.g. 512MiB (default 4GiB;
                        0 = no limit)
   --scene-timeout S    stop a script still running after S seconds (default: no limit)

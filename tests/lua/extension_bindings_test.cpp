@@ -175,7 +175,8 @@ TEST_F(LuaExtensions, WrongArgumentsNameTheCallAndLine) {
             at(1) + "gr.extendedmesh: face 1 corner 1 uv index must be 0 or more (-1 or nil: none), got -2");
   EXPECT_EQ(error_of("m = gr.extendedmesh('m', true, {positions = {{0,0,0},{1,0}}, faces = {{0,1,1}}})\n"),
             at(1) + "gr.extendedmesh: positions entry 2 must be a table of 3 numbers, got a table of 2 values");
-  EXPECT_EQ(error_of("d = read_extended_obj('missing.obj')\n"), at(1) + "read_extended_obj: cannot find 'missing.obj'");
+  EXPECT_EQ(error_of("d = read_extended_obj('missing.obj')\n"), at(1) + "read_extended_obj: cannot find 'missing.obj' (looked in the scene's folder, its parent folders, "
+                                                            "their Assets/ folders and the working directory)");
 }
 
 }  // namespace

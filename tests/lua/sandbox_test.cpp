@@ -18,6 +18,10 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kHint = "scene scripts run sandboxed; run mjray with --unsafe-lua to allow it";
+/// What follows "'NAME'" in a refused read.
+constexpr const char* kOutside =
+    " is outside the folders a scene may read (its own folder tree, the working directory's and those given with "
+    "--allow-read); run mjray with --allow-read DIR to let it read a folder, or --unsafe-lua to lift the sandbox";
 
 // Renders `root` into a file named by the Lua expression `output`, which carries results out.
 std::string render_call(const std::string& output = "'out.png'") {
@@ -109,9 +113,9 @@ TEST_F(LuaSandbox, RequireOfACModuleThatOnlyTheCSearcherCouldFind) {
 
 TEST_F(LuaSandbox, DofileOutsideTheSceneTree) {
   EXPECT_EQ(error_of("dofile('/etc/hostname')\n"),
-            at(1) + "dofile: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+            at(1) + "dofile: '/etc/hostname'" + kOutside);
   EXPECT_EQ(error_of("local f = loadfile('/etc/hostname')\n"),
-            at(1) + "loadfile: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+            at(1) + "loadfile: '/etc/hostname'" + kOutside);
 }
 
 TEST_F(LuaSandbox, RequireIgnoresPackagePathOutsideTheSceneTree) {
@@ -129,17 +133,17 @@ TEST_F(LuaSandbox, RequireIgnoresPackagePathOutsideTheSceneTree) {
 
 TEST_F(LuaSandbox, IoOpenOutsideForReading) {
   EXPECT_EQ(error_of("local f = io.open('/etc/hostname')\n"),
-            at(1) + "io.open: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+            at(1) + "io.open: '/etc/hostname'" + kOutside);
   const fs::path sibling = test::make_temp_dir("sbx-secret");
   std::ofstream(sibling / "secret.txt") << "secret";
   const std::string relative = "../" + sibling.filename().string() + "/secret.txt";
   EXPECT_EQ(error_of("local f = io.open('" + relative + "', 'r')\n"),
-            at(1) + "io.open: '" + relative + "' is outside the scene's folders (" + kHint + ")");
+            at(1) + "io.open: '" + relative + "'" + kOutside);
 }
 
 TEST_F(LuaSandbox, IoLinesOutside) {
   EXPECT_EQ(error_of("\nfor line in io.lines('/etc/hostname') do end\n"),
-            at(2) + "io.lines: '/etc/hostname' is outside the scene's folders (" + kHint + ")");
+            at(2) + "io.lines: '/etc/hostname'" + kOutside);
 }
 
 TEST_F(LuaSandbox, SymlinkOutOfTheSceneFolderIsOutside) {
@@ -147,7 +151,86 @@ TEST_F(LuaSandbox, SymlinkOutOfTheSceneFolderIsOutside) {
   fs::create_symlink("/etc/hostname", dir_ / "link.txt", ec);
   if (ec) GTEST_SKIP() << "cannot create a symlink: " << ec.message();
   EXPECT_EQ(error_of("local f = io.open('link.txt')\n"),
-            at(1) + "io.open: 'link.txt' is outside the scene's folders (" + kHint + ")");
+            at(1) + "io.open: 'link.txt'" + kOutside);
+}
+
+TEST_F(LuaSandbox, EveryGrReaderRefusesFilesOutsideWithoutReadingThem) {
+  // Each call that reads a file by name, given the same outside names: an absolute one, one
+  // that climbs out, and one that does not exist (the answer must not say which exist).
+  const fs::path sibling = test::make_temp_dir("sbx-readers");
+  std::ofstream(sibling / "m.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::string climbing = "../" + sibling.filename().string() + "/m.obj";
+  for (const std::string call : {"readobj", "read_extended_obj", "gr.filetexture", "gr.background"}) {
+    for (const std::string& name : {std::string("/etc/passwd"), climbing, std::string("/no/such/file.obj")}) {
+      SCOPED_TRACE(call + "('" + name + "')");
+      EXPECT_EQ(error_of("\nlocal x = " + call + "('" + name + "')\n"), at(2) + call + ": '" + name + "'" + kOutside);
+    }
+  }
+  EXPECT_EQ(error_of("local m = gr.mesh('m', '/etc/passwd')\n"), at(1) + "gr.mesh: '/etc/passwd'" + kOutside);
+  EXPECT_EQ(error_of("local m = gr.mesh('m', '" + climbing + "')\n"), at(1) + "gr.mesh: '" + climbing + "'" + kOutside);
+  // Caught by the script, the message quotes nothing of the file.
+  const std::string caught = result_of("local ok, message = pcall(readobj, '/etc/passwd')\n" + render_call("message"));
+  EXPECT_EQ(caught, at(1) + "readobj: '/etc/passwd'" + kOutside);
+  EXPECT_EQ(caught.find("root:"), std::string::npos);
+}
+
+TEST_F(LuaSandbox, AMeshLinkedFromInsideToOutsideIsRefused) {
+  const fs::path sibling = test::make_temp_dir("sbx-mesh-link");
+  std::ofstream(sibling / "m.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  fs::create_symlink(sibling / "m.obj", dir_ / "linked.obj");
+  EXPECT_EQ(error_of("local m = gr.mesh('m', 'linked.obj')\n"), at(1) + "gr.mesh: 'linked.obj'" + kOutside);
+}
+
+TEST_F(LuaSandbox, AllowReadLetsTheScriptReadAFoldersTree) {
+  const fs::path models = test::make_temp_dir("sbx-allowed");
+  test::write_file(models / "deep/m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string script = "local m = gr.mesh('m', '" + (models / "deep/m.obj").string() + "')\n" + render_call();
+  EXPECT_EQ(error_of(script), at(1) + "gr.mesh: '" + (models / "deep/m.obj").string() + "'" + kOutside);
+  SceneLoadOptions options;
+  options.allowed_read_folders = {models};
+  EXPECT_EQ(load(script, options).inputs, std::vector<fs::path>{models / "deep/m.obj"});
+  EXPECT_EQ(load(script, unsafe()).inputs, std::vector<fs::path>{models / "deep/m.obj"});
+}
+
+TEST_F(LuaSandbox, TheCs488FallbacksAreThoseExactFoldersNotTheParentsTrees) {
+  // The scene in dir_/course/a4; files in its parent and the parent's Assets/ are found as
+  // the course skeletons expect, but the parent's other subfolders are not readable.
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  write("course/beside.obj", triangle);
+  write("course/Assets/asset.obj", triangle);
+  write("course/private/secret.obj", triangle);
+  const auto script = [&](const std::string& body) { return write("course/a4/scene.lua", body + render_call()); };
+  const std::string scene_at = (dir_ / "course/a4/scene.lua").string() + ":1: ";
+  const auto inputs = load_scene(script("local a = gr.mesh('a', 'beside.obj')\nlocal b = gr.mesh('b', 'asset.obj')\n"
+                                        "local c = gr.mesh('c', '../beside.obj')\n"),
+                                 {}).inputs;
+  EXPECT_EQ(inputs, (std::vector<fs::path>{dir_ / "course/beside.obj", dir_ / "course/Assets/asset.obj",
+                                           dir_ / "course/beside.obj"}));
+  try {
+    load_scene(script("local s = gr.mesh('s', '../private/secret.obj')\n"), {});
+    FAIL() << "expected a refusal";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), scene_at + "gr.mesh: '../private/secret.obj'" + kOutside);
+  }
+  // A fallback Assets/ that is a link elsewhere is no fallback.
+  const fs::path elsewhere = test::make_temp_dir("sbx-assets-link");
+  test::write_file(elsewhere / "far.obj", triangle);
+  fs::create_symlink(elsewhere, dir_ / "Assets");
+  write("course/a4/Assets/.keep", "");
+  try {
+    load_scene(write("course/scene2/scene.lua", "local f = gr.mesh('f', 'far.obj')\n" + render_call()), {});
+    FAIL() << "expected far.obj not to be found";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("gr.mesh: cannot find 'far.obj'"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(LuaSandbox, EnvironmentLocaleAndSearchpathAreRefused) {
+  EXPECT_EQ(error_of("local home = os.getenv('HOME')\n"), at(1) + "os.getenv is not allowed: " + kHint);
+  EXPECT_EQ(error_of("os.setlocale('de_DE.UTF-8')\n"), at(1) + "os.setlocale is not allowed: " + kHint);
+  EXPECT_EQ(error_of("local p = package.searchpath('x', '/etc/?')\n"),
+            at(1) + "package.searchpath is not allowed: " + kHint);
+  EXPECT_EQ(result_of("local home = os.getenv('HOME')\n" + render_call("tostring(home ~= nil)"), unsafe()), "true");
 }
 
 TEST_F(LuaSandbox, LoadOfABinaryChunk) {

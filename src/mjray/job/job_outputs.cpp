@@ -6,29 +6,13 @@
 
 #include "mjray/io/atomic_file.h"
 #include "mjray/io/image_codec.h"
+#include "mjray/io/path_resolver.h"
 #include "mjray/render/render_checkpoint.h"
 
 namespace mjray {
 namespace fs = std::filesystem;
 
 namespace {
-
-/// The path with links and ".." resolved as far as it exists.
-fs::path resolved(const fs::path& path) {
-  std::error_code ec;
-  const fs::path absolute = fs::absolute(path, ec);
-  const fs::path canonical = fs::weakly_canonical(absolute, ec);
-  return ec ? absolute.lexically_normal() : canonical;
-}
-
-bool is_within(const fs::path& path, const fs::path& root) {
-  auto p = path.begin();
-  for (auto r = root.begin(); r != root.end(); ++r, ++p) {
-    if (r->empty()) continue;  // the trailing "" of "dir/"
-    if (p == path.end() || *p != *r) return false;
-  }
-  return true;
-}
 
 /// Creates a folder the command line named; throws OutputError(prefix + reason) when it cannot.
 void create_folder(const fs::path& folder, const std::string& prefix) {
@@ -39,9 +23,9 @@ void create_folder(const fs::path& folder, const std::string& prefix) {
 
 /// Refuses a script-named output outside the script's folder tree and the working directory's.
 void check_confined(const SceneDescription& scene, size_t index, const fs::path& path) {
-  const fs::path target = resolved(path);
-  const fs::path scene_folder = resolved(fs::absolute(scene.script).parent_path());
-  const fs::path working_folder = resolved(fs::current_path());
+  const fs::path target = real_place(path);
+  const fs::path scene_folder = real_place(fs::absolute(scene.script).parent_path());
+  const fs::path working_folder = real_place(fs::current_path());
   if (is_within(target, scene_folder) || is_within(target, working_folder)) return;
   throw SceneError(scene.jobs[index].where,
                    "gr.render: '" + scene.jobs[index].output.string() + "' resolves to '" + target.string() +
@@ -57,7 +41,7 @@ void check_places(const SceneDescription& scene, const OutputOptions& options, c
   for (const size_t i : jobs) {
     const fs::path path = output_path(scene, i, options);
     try {
-      if (probed.insert(resolved(path).parent_path()).second) check_writable_place(path);
+      if (probed.insert(real_place(path).parent_path()).second) check_writable_place(path);
       check_name_fits(path);
       try {
         check_name_fits(checkpoint_path(path));
@@ -116,7 +100,7 @@ std::vector<std::string> check_outputs(const SceneDescription& scene, const Outp
   std::map<fs::path, size_t> first_writer;
   for (const size_t i : jobs) {
     const fs::path path = output_path(scene, i, options);
-    const auto [it, first] = first_writer.emplace(resolved(path), i);
+    const auto [it, first] = first_writer.emplace(real_place(path), i);
     if (first) continue;
     warnings.push_back(scene.jobs[i].where.to_string() + ": gr.render writes '" + path.string() +
                        "', which the gr.render at " + scene.jobs[it->second].where.to_string() +

@@ -10,7 +10,6 @@ extern "C" {
 }
 
 #include "mjray/io/obj_loader.h"
-#include "mjray/io/path_resolver.h"
 #include "mjray/lua/extended_mesh_tables.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
@@ -96,12 +95,10 @@ int gr_arealight(lua_State* L) {
 /// read_extended_obj('file.obj'): the OBJ's positions, normals and UVs, for gr.extendedmesh.
 int read_extended_obj(lua_State* L) {
   const std::string name = arg_string(L, 1, "read_extended_obj", "file name");
-  const auto path = resolve_input(name, context(L).script_dir);
-  if (!path) throw ArgumentError("read_extended_obj: cannot find '" + name + "'");
-  record_input(L, *path);
+  const std::filesystem::path path = input_file(L, "read_extended_obj", name);
   std::shared_ptr<const TriangleMesh> mesh;
   try {
-    mesh = load_checked_obj(L, *path);
+    mesh = load_checked_obj(L, path);
   } catch (const SceneError& e) {
     throw ArgumentError(std::string("read_extended_obj: ") + e.what());
   }

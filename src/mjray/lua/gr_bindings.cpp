@@ -18,7 +18,6 @@ extern "C" {
 
 #include "mjray/camera/camera.h"
 #include "mjray/io/obj_loader.h"
-#include "mjray/io/path_resolver.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
 
@@ -115,13 +114,11 @@ std::shared_ptr<const TriangleMesh> table_mesh(lua_State* L, const char* fn) {
 
 std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::string& name, const char* fn) {
   LoaderContext& ctx = context(L);
-  const auto path = resolve_input(name, ctx.script_dir);
-  if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
-  record_input(L, *path);
-  const auto key = std::filesystem::weakly_canonical(*path);
+  const std::filesystem::path path = input_file(L, fn, name);
+  const auto key = std::filesystem::weakly_canonical(path);
   auto& cached = ctx.mesh_cache[key];
   try {
-    if (!cached) cached = load_checked_obj(L, *path);
+    if (!cached) cached = load_checked_obj(L, path);
   } catch (const SceneError& e) {
     // "OBJFILE:LINE: problem" becomes "scene.lua:LINE: gr.mesh: OBJFILE:LINE: problem".
     throw ArgumentError(std::string(fn) + ": " + e.what());

@@ -16,6 +16,7 @@ extern "C" {
 
 #include "mjray/core/error.h"
 #include "mjray/io/file_hash.h"
+#include "mjray/io/path_resolver.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/scene/scene_description.h"
 
@@ -85,6 +86,7 @@ struct LoaderContext {
   std::filesystem::path script;
   std::filesystem::path script_dir;
   SceneLoadOptions options;
+  ReadAccess read_access;  ///< what the script may read (everything with --unsafe-lua)
   /// The automatic transform order, decided at the first gr.render (see docs/scene-format.md).
   std::optional<bool> post_multiply;
   SceneDescription* description = nullptr;
@@ -146,8 +148,13 @@ void add_warning(lua_State* L, const std::string& text);
 /// "file:line" of the Lua code that called the running C function.
 FileLocation caller_location(lua_State* L);
 
-/// "cannot find 'name' (looked in ...)": the message for a relative input found nowhere.
-std::string not_found_message(const std::string& name);
+/// The file a script names for `fn` to read (a mesh, a texture, an environment): found like
+/// every scene input, refused outside what the script may read, and recorded as an input.
+/// Throws ArgumentError("FN: ...") when it is missing or refused.
+std::filesystem::path input_file(lua_State* L, const char* fn, const std::string& name);
+
+/// What a refused read adds to its message: how the user allows more.
+std::string read_refusal_hint();
 
 /// A C function that reports C++ exceptions as Lua errors at the caller's line (the
 /// exception is gone before lua_error unwinds, so no C++ destructor is skipped). F itself must

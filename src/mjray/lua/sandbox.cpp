@@ -10,7 +10,6 @@ extern "C" {
 }
 
 #include "mjray/io/obj_loader.h"
-#include "mjray/io/path_resolver.h"
 #include "mjray/lua/lua_context.h"
 
 namespace mjray::lua {
@@ -21,44 +20,6 @@ constexpr const char* kUnsafeHint = "scene scripts run sandboxed; run mjray with
 
 // --- helpers -------------------------------------------------------------------------------
 
-/// Folders a sandboxed script may read: its own folder tree and the Assets/ folder of each
-/// folder above it (where CS 488 skeletons keep meshes).
-std::vector<std::filesystem::path> read_roots(const std::filesystem::path& script_dir) {
-  std::vector<std::filesystem::path> roots;
-  std::filesystem::path dir = std::filesystem::weakly_canonical(script_dir);
-  roots.push_back(dir);
-  while (true) {
-    roots.push_back(dir / "Assets");
-    const auto parent = dir.parent_path();
-    if (parent == dir) break;
-    dir = parent;
-  }
-  return roots;
-}
-
-bool is_within(const std::filesystem::path& path, const std::filesystem::path& root) {
-  auto p = path.begin();
-  for (auto r = root.begin(); r != root.end(); ++r, ++p) {
-    if (p == path.end() || *p != *r) return false;
-  }
-  return true;
-}
-
-bool may_read(const LoaderContext& ctx, const std::filesystem::path& path) {
-  const auto canonical = std::filesystem::weakly_canonical(path);
-  for (const auto& root : read_roots(ctx.script_dir))
-    if (is_within(canonical, root)) return true;
-  return false;
-}
-
-/// A relative name resolved like every scene path; names that exist nowhere resolve into the
-/// script's folder (so error messages and new files name a sensible place).
-std::filesystem::path resolve_script_path(const LoaderContext& ctx, const std::string& name) {
-  if (auto found = resolve_input(name, ctx.script_dir)) return *found;
-  const std::filesystem::path path(name);
-  return path.is_absolute() ? path : ctx.script_dir / path;
-}
-
 /// Where a file the script writes, removes or renames lives: relative names are beside the
 /// script, like the images it renders.
 std::filesystem::path write_path(const LoaderContext& ctx, const std::string& name) {
@@ -66,13 +27,17 @@ std::filesystem::path write_path(const LoaderContext& ctx, const std::string& na
   return path.is_absolute() ? path : ctx.script_dir / path;
 }
 
-/// Checks that a sandboxed script may read `name`; returns the resolved path.
+/// Checks that the script may read `name`; returns the file it means (where io.open will
+/// report it missing, if no readable file is found).
 std::string checked_read_path(lua_State* L, const char* fn, const std::string& name) {
   const LoaderContext& ctx = context(L);
-  const auto path = resolve_script_path(ctx, name);
-  if (!ctx.options.unsafe_lua && !may_read(ctx, path))
-    throw ArgumentError(std::string(fn) + ": '" + name + "' is outside the scene's folders (" + kUnsafeHint + ")");
-  return path.string();
+  try {
+    if (const auto found = ctx.read_access.resolve(name)) return found->string();
+  } catch (const ReadRefused& e) {
+    throw ArgumentError(std::string(fn) + ": " + e.what() + read_refusal_hint());
+  }
+  const std::filesystem::path path(name);
+  return (path.is_absolute() ? path : ctx.script_dir / path).string();
 }
 
 // --- refusing functions --------------------------------------------------------------------
@@ -248,7 +213,7 @@ int scene_searcher(lua_State* L) {
       const std::filesystem::path candidate = folder.string() + "/" + relative + pattern;
       std::error_code ec;
       if (!std::filesystem::is_regular_file(candidate, ec)) continue;
-      if (!ctx.options.unsafe_lua && !may_read(ctx, candidate)) continue;
+      if (!ctx.read_access.allows(candidate)) continue;
       const std::string path = candidate.lexically_normal().string();
       record_input(L, path);
       if (luaL_loadfilex(L, path.c_str(), "t") != LUA_OK)
@@ -273,13 +238,10 @@ int refuse_native_module(lua_State* L) {
 int builtin_readobj_impl(lua_State* L) {
   if (lua_type(L, 1) != LUA_TSTRING)
     throw ArgumentError("readobj: argument 1 (file name) must be a string, got a " + std::string(luaL_typename(L, 1)));
-  const std::string name = lua_tostring(L, 1);
-  const auto path = resolve_input(name, context(L).script_dir);
-  if (!path) throw ArgumentError("readobj: " + not_found_message(name));
-  record_input(L, *path);
+  const std::filesystem::path path = input_file(L, "readobj", lua_tostring(L, 1));
   TriangleMesh mesh;
   try {
-    mesh = *load_checked_obj(L, *path);
+    mesh = *load_checked_obj(L, path);
   } catch (const SceneError& e) {
     throw ArgumentError(std::string("readobj: ") + e.what());
   }
@@ -366,9 +328,13 @@ void install_path_resolution(lua_State* L) {
 }
 
 void install_sandbox(lua_State* L) {
-  for (const char* field : {"execute", "exit", "remove", "rename", "tmpname"}) replace_with_refusal(L, "os", field);
+  // os.getenv tells a script about the user; os.setlocale changes how the whole process
+  // writes numbers (statistics JSON with decimal commas).
+  for (const char* field : {"execute", "exit", "remove", "rename", "tmpname", "getenv", "setlocale"})
+    replace_with_refusal(L, "os", field);
   for (const char* field : {"popen", "tmpfile"}) replace_with_refusal(L, "io", field);
-  replace_with_refusal(L, "package", "loadlib");
+  // package.searchpath tells whether a file exists anywhere.
+  for (const char* field : {"loadlib", "searchpath"}) replace_with_refusal(L, "package", field);
   wrap(L, "io", "output", io_output);
   wrap(L, nullptr, "load", load_text_only);
 

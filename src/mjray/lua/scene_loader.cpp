@@ -73,9 +73,24 @@ std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::fi
   return mesh;
 }
 
-std::string not_found_message(const std::string& name) {
-  return "cannot find '" + name +
-         "' (looked in the scene's folder, its parent folders, their Assets/ folders and the working directory)";
+std::string read_refusal_hint() {
+  return " (its own folder tree, the working directory's and those given with --allow-read); run mjray with "
+         "--allow-read DIR to let it read a folder, or --unsafe-lua to lift the sandbox";
+}
+
+std::filesystem::path input_file(lua_State* L, const char* fn, const std::string& name) {
+  std::optional<std::filesystem::path> path;
+  try {
+    path = context(L).read_access.resolve(name);
+  } catch (const ReadRefused& e) {
+    throw ArgumentError(std::string(fn) + ": " + e.what() + read_refusal_hint());
+  }
+  if (!path)
+    throw ArgumentError(std::string(fn) + ": cannot find '" + name +
+                        "' (looked in the scene's folder, its parent folders, their Assets/ folders and the working "
+                        "directory)");
+  record_input(L, *path);
+  return *path;
 }
 
 LuaNode::~LuaNode() {
@@ -255,6 +270,7 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   ctx.script = script;
   ctx.script_dir = std::filesystem::absolute(script).parent_path();
   ctx.options = options;
+  if (!options.unsafe_lua) ctx.read_access = ReadAccess(ctx.script_dir, options.allowed_read_folders);
   ctx.description = &description;
 
   // Compute the state on the capped allocator; the cap and budget start with the script.

@@ -25,7 +25,10 @@ inline constexpr size_t kDefaultLuaMemoryBytes = size_t(4) << 30;
 
 /// How to run the script.
 struct SceneLoadOptions {
-  bool unsafe_lua = false;  ///< give the script the full standard library
+  bool unsafe_lua = false;  ///< give the script the full standard library and every file
+  /// --allow-read: folders whose trees a sandboxed script may read, beside its own folder's
+  /// and the working directory's.
+  std::vector<std::filesystem::path> allowed_read_folders;
   TransformOrder transform_order = TransformOrder::kAuto;
   /// Decode 8-bit image textures from sRGB to linear (with --gamma srgb); else use v/255.
   bool srgb_textures = false;

@@ -12,7 +12,6 @@ extern "C" {
 }
 
 #include "mjray/io/image_reader.h"
-#include "mjray/io/path_resolver.h"
 #include "mjray/io/quantise.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
@@ -59,13 +58,11 @@ int gr_filetexture(lua_State* L) {
   const char* fn = "gr.filetexture";
   const std::string name = arg_string(L, 1, fn, "file name");
   if (name.empty()) bad_argument(L, fn, 1, "file name", "a file name");
-  const auto path = resolve_input(name, context(L).script_dir);
-  if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
-  record_input(L, *path);
+  const std::filesystem::path path = input_file(L, fn, name);
   ImageTexture texture;
   try {
-    texture.image = read_image(*path);
-    if (context(L).options.srgb_textures && !holds_linear_values(*path)) decode_srgb_8bit(texture.image);
+    texture.image = read_image(path);
+    if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(texture.image);
   } catch (const OutputError& e) {
     throw ArgumentError(std::string(fn) + ": " + e.what());
   }

@@ -11,7 +11,6 @@ extern "C" {
 }
 
 #include "mjray/io/image_reader.h"
-#include "mjray/io/path_resolver.h"
 #include "mjray/io/quantise.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
@@ -42,12 +41,10 @@ int gr_lens(lua_State* L) {
 std::shared_ptr<const Image> environment_image(lua_State* L, const std::string& name) {
   const char* fn = "gr.background";
   if (name.empty()) bad_argument(L, fn, 1, "environment image", "a file name");
-  const auto path = resolve_input(name, context(L).script_dir);
-  if (!path) throw ArgumentError(std::string(fn) + ": " + not_found_message(name));
-  record_input(L, *path);
+  const std::filesystem::path path = input_file(L, fn, name);
   try {
-    auto image = std::make_shared<Image>(read_image(*path, {.keep_16_bits = true}));
-    if (context(L).options.srgb_textures && !holds_linear_values(*path)) decode_srgb_8bit(*image);
+    auto image = std::make_shared<Image>(read_image(path, {.keep_16_bits = true}));
+    if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(*image);
     return image;
   } catch (const OutputError& e) {
     throw ArgumentError(std::string(fn) + ": " + e.what());
