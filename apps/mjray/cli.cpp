@@ -200,7 +200,10 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"-j", threads},
       {"--threads", threads},
       {"--tile-size", [&](auto& o, auto& v) { cl.tile_size = int(parse_integer(o, v, 1, 4096)); }},
-      {"--seed", [&](auto& o, auto& v) { cl.seed = uint64_t(parse_integer(o, v, 0, kMaxInt * kMaxInt)); }},
+      {"--seed", [&](auto& o, auto& v) {
+         cl.seed = uint64_t(parse_integer(o, v, 0, kMaxInt * kMaxInt));
+         cl.load.random_seed = cl.seed;
+       }},
       {"--aa-threshold", [&](auto& o, auto& v) { cl.antialias_threshold = float(parse_real(o, v, 0, 1, "a number in (0, 1]")); }},
       {"--lua-memory", [&](auto& o, auto& v) { cl.load.lua_memory_bytes = parse_bytes(o, v); }},
       {"--scene-timeout", [&](auto& o, auto& v) {

@@ -205,6 +205,29 @@ TEST_F(MpiRender, RanksOnOneHostEachTakeTheirShareOfItsMemoryForPhotonMaps) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "room.png"));
 }
 
+TEST_F(MpiRender, AScriptThatDrawsRandomNumbersIsOneSceneOnEveryRank) {
+  // Each ball's colour comes from math.random: seeded from --seed, every rank describes the
+  // same scene, so the image is no patchwork of the ranks' scenes.
+  const auto scene = write_file(dir_ / "random.lua",
+                                "local root = gr.node('root')\n"
+                                "for i = 0, 15 do\n"
+                                "  local s = gr.nh_sphere('s' .. i, {(i % 4) * 2 - 3, math.floor(i / 4) * 2 - 3, -10}, 0.9)\n"
+                                "  s:set_material(gr.material({math.random(), math.random(), math.random()}, {0, 0, 0}, 1))\n"
+                                "  root:add_child(s)\n"
+                                "end\n"
+                                "gr.render(root, 'random.png', 64, 64, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 50, {0.3, 0.3, 0.3},\n"
+                                "          {gr.light({5, 5, 10}, {0.8, 0.8, 0.8}, {1, 0, 0})})\n");
+  ASSERT_EQ(run(mjray({"--quiet", "--seed", "5", "--output", (dir_ / "ref.png").string(), scene.string()})), 0);
+  const std::string reference = read_file(dir_ / "ref.png");
+  ASSERT_FALSE(reference.empty());
+  const auto out = dir_ / "np3.png";
+  const auto log = dir_ / "log.txt";
+  ASSERT_EQ(run(plus(mpirun(3), {"--quiet", "-j", "1", "--seed", "5", "--distribute", "tiles", "--output", out.string(),
+                                 scene.string()}),
+                log), 0) << read_file(log);
+  EXPECT_EQ(read_file(out), reference);
+}
+
 TEST_F(MpiRender, CorpusSceneIsTheSameBytesForOneTwoAndThreeRanks) {
   MJRAY_REQUIRE_SHARED(shared);
   // A CS 488 scene that requires a module (buckyball.lua, read by every rank) and has instances.

@@ -302,6 +302,18 @@ TEST_F(LuaSandbox, PrintStringTableAndMathWork) {
             "3123XA");
 }
 
+TEST_F(LuaSandbox, MathRandomIsSeededFromTheSeedOption) {
+  const std::string script = "local a, b = math.random(1, 1000000000), math.random()\n" + render_call("a .. ' ' .. b");
+  SceneLoadOptions seven;
+  seven.random_seed = 7;
+  const std::string first = result_of(script, seven);
+  EXPECT_EQ(result_of(script, seven), first);
+  EXPECT_EQ(result_of(script, unsafe()), result_of(script, {}));  // both seed 0
+  EXPECT_NE(result_of(script, {}), first);
+  // math.randomseed still reseeds as the script asks.
+  EXPECT_EQ(result_of("math.randomseed(7)\n" + script), first);
+}
+
 // --- lifted by unsafe_lua ----------------------------------------------------------------
 
 TEST_F(LuaSandbox, UnsafeLuaAllowsOsExecuteAndWriting) {

@@ -252,6 +252,15 @@ void set_defines(lua_State* L, const SceneLoadOptions& options, const std::files
   }
 }
 
+/// Lua 5.4 seeds math.random from the time and an address: seed it from --seed instead.
+void seed_math_random(lua_State* L, uint64_t seed) {
+  lua_getglobal(L, "math");
+  lua_getfield(L, -1, "randomseed");
+  lua_pushinteger(L, lua_Integer(seed));
+  lua_call(L, 1, 0);
+  lua_pop(L, 1);
+}
+
 /// lua_atpanic: an error outside any protected call (only while the libraries are installed).
 int on_panic(lua_State* L) {
   const char* message = lua_tostring(L, -1);
@@ -285,6 +294,7 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
   limits.L = L;
   lua_atpanic(L, lua::on_panic);
   luaL_openlibs(L);
+  lua::seed_math_random(L, options.random_seed);
   lua::set_context(L, &ctx);
   // The sandbox goes last: it rebuilds package.searchers from what compatibility installed.
   lua::install_compatibility(L);

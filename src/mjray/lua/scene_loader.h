@@ -26,6 +26,9 @@ inline constexpr size_t kDefaultLuaMemoryBytes = size_t(4) << 30;
 /// How to run the script.
 struct SceneLoadOptions {
   bool unsafe_lua = false;  ///< give the script the full standard library and every file
+  /// Seeds math.random (--seed), so that a script that draws random numbers describes the same
+  /// scene in every run, process and resume.
+  uint64_t random_seed = 0;
   /// --allow-read: folders whose trees a sandboxed script may read, beside its own folder's
   /// and the working directory's.
   std::vector<std::filesystem::path> allowed_read_folders;
