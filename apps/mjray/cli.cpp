@@ -14,6 +14,7 @@
 
 #include <arpa/inet.h>
 
+#include "mjray/core/image.h"
 #include "mjray/core/parallel_for.h"
 
 namespace mjray {
@@ -96,15 +97,13 @@ std::vector<long long> parse_integers(const std::string& text, char separator, s
   return values;
 }
 
-/// Largest image --size accepts, as gr.render does: 2^27 pixels.
-constexpr long long kMaxPixels = 1LL << 27;
-
-/// --size WxH: whole numbers from 1 to 65536, at most 2^27 pixels.
+/// --size WxH: whole numbers from 1 to kMaxImageSide, at most kMaxImagePixels pixels.
 std::pair<int, int> parse_size(const std::string& option, const std::string& text) {
-  const std::string usage = option + " expects WIDTHxHEIGHT with whole numbers from 1 to 65536 (e.g. 640x360), got '" + text + "'";
+  const std::string usage = option + " expects WIDTHxHEIGHT with whole numbers from 1 to " + std::to_string(kMaxImageSide) +
+                            " (e.g. 640x360), got '" + text + "'";
   const auto wh = parse_integers(text, 'x', 2, usage);
-  if (wh[0] < 1 || wh[1] < 1 || wh[0] > 65536 || wh[1] > 65536) throw UsageError(usage);
-  if (wh[0] * wh[1] > kMaxPixels)
+  if (wh[0] < 1 || wh[1] < 1 || wh[0] > kMaxImageSide || wh[1] > kMaxImageSide) throw UsageError(usage);
+  if (uint64_t(wh[0] * wh[1]) > kMaxImagePixels)
     throw UsageError(option + " " + text + " has more than 2^27 pixels (e.g. 16384x8192), the most mjray renders");
   return {int(wh[0]), int(wh[1])};
 }
@@ -114,7 +113,8 @@ PixelRect parse_crop(const std::string& option, const std::string& text) {
   const std::string usage = option + " expects X0,Y0,X1,Y1: the window [X0, X1) x [Y0, Y1) in pixels, "
                             "0 <= X0 < X1 <= 65536 and 0 <= Y0 < Y1 <= 65536, got '" + text + "'";
   const auto v = parse_integers(text, ',', 4, usage);
-  if (v[0] < 0 || v[1] < 0 || v[0] >= v[2] || v[1] >= v[3] || v[2] > 65536 || v[3] > 65536) throw UsageError(usage);
+  if (v[0] < 0 || v[1] < 0 || v[0] >= v[2] || v[1] >= v[3] || v[2] > kMaxImageSide || v[3] > kMaxImageSide)
+    throw UsageError(usage);
   return {int(v[0]), int(v[1]), int(v[2]), int(v[3])};
 }
 

@@ -45,10 +45,11 @@ ResumePlan plan_resume(const std::filesystem::path& image, const std::string& fi
   const auto state_path = checkpoint_path(image);
   std::error_code ec;
   if (std::filesystem::exists(state_path, ec)) {
-    plan.state = read_checkpoint(state_path);
-    if (plan.state->fingerprint != fingerprint)
-      throw SceneError(state_path.string() + ": this resume state was saved by a different scene or different options (" +
-                       fingerprint_difference(plan.state->fingerprint, fingerprint) + "); render without --resume to start again");
+    plan.state = read_checkpoint(state_path, [&](const std::string& saved) {
+      if (saved != fingerprint)
+        throw SceneError(state_path.string() + ": this resume state was saved by a different scene or different options (" +
+                         fingerprint_difference(saved, fingerprint) + "); render without --resume to start again");
+    });
     return plan;
   }
   plan.keep = std::filesystem::exists(image, ec) && complete_image_matches(image, fingerprint);
@@ -59,8 +60,12 @@ void write_finished_image(const Image& image, const std::filesystem::path& path,
                           const std::string& fingerprint) {
   encoding.metadata.emplace_back(kFingerprintKey, fingerprint);
   write_image(image, path, encoding);
-  std::error_code ec;
-  std::filesystem::remove(checkpoint_path(path), ec);
+  // The state of an earlier, interrupted render of this image is done with; a file of that
+  // name that is not mjray's is the user's, and stays.
+  if (is_checkpoint_file(checkpoint_path(path))) {
+    std::error_code ec;
+    std::filesystem::remove(checkpoint_path(path), ec);
+  }
 }
 
 void write_interrupted_image(const RenderCheckpoint& checkpoint, const std::filesystem::path& path,

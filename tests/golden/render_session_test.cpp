@@ -188,6 +188,20 @@ TEST(GoldenRender, RealSigintKeepsThePartialImageAndResumeFinishesItIdentically)
                 scene.string() + "' 2> '" + log.string() + "'"), 1);
   EXPECT_NE(read_file(log).find("different scene or different options"), std::string::npos) << read_file(log);
 
+  // One flipped bit in a finished pixel: refused, and the state and the image are kept.
+  const std::string state = read_file(dir / "slow.png.mjray-state"), partial = read_file(dir / "slow.png");
+  std::string damaged = state;
+  damaged[damaged.size() - 100] ^= 0x10;
+  test::write_file(dir / "slow.png.mjray-state", damaged);
+  EXPECT_EQ(run("'" + mjray + "' --quiet --resume --output '" + (dir / "slow.png").string() + "' '" + scene.string() +
+                "' 2> '" + log.string() + "'"), 1);
+  EXPECT_EQ(read_file(log), "mjray: error: " + (dir / "slow.png.mjray-state").string() +
+                                ": the resume state file is damaged (the checksum of its pixels and progress does not "
+                                "match); it is kept as it is: remove it, or render without --resume\n");
+  EXPECT_EQ(read_file(dir / "slow.png.mjray-state"), damaged);
+  EXPECT_EQ(read_file(dir / "slow.png"), partial);
+  test::write_file(dir / "slow.png.mjray-state", state);
+
   ASSERT_EQ(run("'" + mjray + "' --quiet --resume --output '" + (dir / "slow.png").string() + "' '" + scene.string() + "'"), 0);
   EXPECT_EQ(read_file(dir / "slow.png"), read_file(dir / "reference.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "slow.png.mjray-state"));

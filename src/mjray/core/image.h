@@ -2,11 +2,18 @@
 /// A rectangular grid of linear colours, row 0 at the top.
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "mjray/core/color.h"
 
 namespace mjray {
+
+/// The widest and tallest image mjray renders (gr.render, --size, --crop, resume states).
+inline constexpr int kMaxImageSide = 65536;
+/// The most pixels an image may have: 2^27 (e.g. 16384 x 8192), about 5 GiB of render buffers
+/// at some 40 bytes per pixel (colours, the anti-aliasing pass copy, the snapshot being written).
+inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
 
 /// Pixels in row-major order, (0,0) the top-left corner.
 class Image {

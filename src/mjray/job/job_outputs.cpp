@@ -44,7 +44,12 @@ void check_places(const SceneDescription& scene, const OutputOptions& options, c
       if (probed.insert(real_place(path).parent_path()).second) check_writable_place(path);
       check_name_fits(path);
       try {
-        check_name_fits(checkpoint_path(path));
+        const fs::path state = checkpoint_path(path);
+        check_name_fits(state);
+        std::error_code ec;
+        if (fs::exists(state, ec) && !is_checkpoint_file(state))
+          throw OutputError("cannot write '" + state.string() + "': a file of that name is there, and it is not an mjray "
+                            "resume state; move it away");
       } catch (const OutputError& e) {
         throw OutputError(std::string(e.what()) + " (the resume state that an interrupted render writes beside its image)");
       }

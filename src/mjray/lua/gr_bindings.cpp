@@ -214,9 +214,6 @@ int gr_light(lua_State* L) {
 
 // --- gr.render: snapshot the graph ---------------------------------------------------------
 
-/// Largest image gr.render accepts: 2^27 pixels, about 5 GiB of render buffers.
-constexpr double kMaxRenderPixels = double(1 << 27);
-
 /// Copies the live graph into immutable nodes, composing each node's transform calls by the
 /// chosen rule and keeping shared children shared.
 class Snapshot {
@@ -326,16 +323,14 @@ int gr_render(lua_State* L) {
   if (job.output.empty()) bad_argument(L, fn, 2, "output file", "a file name");
   const double width = arg_number(L, 3, fn, "width"), height = arg_number(L, 4, fn, "height");
   if (width < 1 || height < 1 || width != std::floor(width) || height != std::floor(height) ||
-      width > 65536 || height > 65536)
-    throw ArgumentError("gr.render: width and height must be whole numbers from 1 to 65536, got " +
+      width > kMaxImageSide || height > kMaxImageSide)
+    throw ArgumentError("gr.render: width and height must be whole numbers from 1 to " + std::to_string(kMaxImageSide) + ", got " +
                         format_number(width) + " x " + format_number(height));
-  // Compute whether the film fits: the renderer keeps about 40 bytes per pixel (colours, the
-  // anti-aliasing pass copy, the snapshot being written).
-  if (width * height > double(kMaxRenderPixels))
+  if (width * height > double(kMaxImagePixels))
     throw ArgumentError("gr.render: a " + format_number(width) + " x " + format_number(height) + " image (" +
                         format_number(width * height / 1e6) + " million pixels) needs about " +
                         format_number(std::ceil(width * height * 40 / double(1 << 30))) +
-                        " GiB of buffers; the limit is " + format_number(kMaxRenderPixels / 1e6) +
+                        " GiB of buffers; the limit is " + format_number(double(kMaxImagePixels) / 1e6) +
                         " million pixels (e.g. 16384 x 8192)");
   job.width = int(width);
   job.height = int(height);

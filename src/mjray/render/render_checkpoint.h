@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,13 +27,25 @@ struct RenderCheckpoint {
 /// Writes a checkpoint atomically (temporary file + rename). Throws OutputError.
 void write_checkpoint(const RenderCheckpoint& checkpoint, const std::filesystem::path& path);
 
-/// Reads a checkpoint; throws SceneError naming the file when it is unreadable or malformed.
-RenderCheckpoint read_checkpoint(const std::filesystem::path& path);
+/// Called with a state's fingerprint once its header has passed its checks and before the rest
+/// is read, so that a state of another job is refused without reading it; throws to refuse.
+using FingerprintCheck = std::function<void(const std::string& fingerprint)>;
 
-/// The bytes of a state file (to write, or to send to another process).
+/// Reads a checkpoint; throws SceneError naming the file when it is unreadable, damaged (a
+/// checksum or a size does not match) or not a state file. Its size is checked against what
+/// its header says before anything of that size is read or allocated.
+RenderCheckpoint read_checkpoint(const std::filesystem::path& path, const FingerprintCheck& check = {});
+
+/// Whether `path` is a resume state file of mjray's (its header intact), not someone's file
+/// that happens to have the name.
+bool is_checkpoint_file(const std::filesystem::path& path);
+
+/// The bytes of a state file (to write, or to send to another process): a header (what the
+/// state belongs to, the image size, the counts of what follows) and a body (the flags and the
+/// film), each followed by its XXH3 checksum.
 std::string encode_checkpoint(const RenderCheckpoint& checkpoint);
 
-/// Decodes the bytes of a state file; throws SceneError naming `origin` when they are malformed.
+/// Decodes the bytes of a state file; throws SceneError naming `origin` when they are damaged.
 RenderCheckpoint decode_checkpoint(const std::string& bytes, const std::filesystem::path& origin);
 
 /// The state file that belongs to an output image.
