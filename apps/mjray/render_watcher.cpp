@@ -22,11 +22,11 @@ std::string clock_text(double seconds) {
   return buffer;
 }
 
-/// Seconds between estimates of the anti-aliasing work from the finished tiles, and before
-/// the first: a first pass often ends within a second, and until the estimate the
-/// anti-aliasing looks like no work at all.
-constexpr double kShareInterval = 1.0;
-constexpr double kFirstShareInterval = 0.2;
+/// Seconds between estimates of the anti-aliasing work from the finished tiles: often, since
+/// the first tiles (the top of the image, often sky) say little about the rest and a first
+/// pass often ends within a second, but never more than a tenth of the time on estimates.
+constexpr double kShareInterval = 0.2;
+constexpr double kShareCostFactor = 10;
 /// Without a terminal, a line at least this often even when no tenth more is done.
 constexpr double kQuietLineInterval = 5.0;
 
@@ -55,7 +55,7 @@ void RenderWatcher::loop() {
   const auto start = Clock::now();
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto last_snapshot = start, last_report = start, last_share = start;
-  bool share_known = false;
+  double share_interval = kShareInterval;
   for (;;) {
     {
       std::unique_lock lock(wake_mutex_);
@@ -66,13 +66,13 @@ void RenderWatcher::loop() {
     estimate_.update(render_.progress(), elapsed);
     // During the first pass, how much anti-aliasing the finished tiles will need.
     if (!options_.quiet && options_.render.antialias_samples > 0 && !options_.render.subdivides() &&
-        render_.progress().antialias_pass == 0 &&
-        seconds_since(last_share) >= (share_known ? kShareInterval : kFirstShareInterval)) {
+        render_.progress().antialias_pass == 0 && seconds_since(last_share) >= share_interval) {
+      const auto began = Clock::now();
       const auto share =
           supersample_share(render_.snapshot(), options_.render.tile_size, options_.render.antialias_threshold);
       if (share) estimate_.set_first_pass_share(*share);
-      share_known = share.has_value();
       last_share = Clock::now();
+      share_interval = std::max(kShareInterval, kShareCostFactor * seconds_since(began));
     }
     if (seconds_since(last_report) >= (terminal_ ? 0.25 : 0.5)) {
       report(elapsed, false);
@@ -115,11 +115,14 @@ void RenderWatcher::report(double elapsed, bool final) {
     if (final) std::fputc('\n', stderr);
     return;
   }
-  // Not a terminal: a line each time another tenth is done, and at least every few seconds.
+  // Not a terminal: a line each time another tenth is done or a stage begins, and at least
+  // every few seconds.
   const int percent = std::max(last_percent_, int(fraction * 100 + 1e-9));
   const bool new_tenth = percent / 10 > last_percent_ / 10 || last_percent_ < 0;
-  if (!(final || (new_tenth && percent >= 10) || elapsed - last_line_at_ >= kQuietLineInterval)) return;
-  if (!final && percent == last_percent_ && elapsed - last_line_at_ < kQuietLineInterval) return;
+  const bool new_stage = stage != last_stage_;
+  last_stage_ = stage;
+  if (!(final || new_stage || (new_tenth && percent >= 10) || elapsed - last_line_at_ >= kQuietLineInterval)) return;
+  if (!final && !new_stage && percent == last_percent_ && elapsed - last_line_at_ < kQuietLineInterval) return;
   last_percent_ = percent;
   last_line_at_ = elapsed;
   std::fprintf(stderr, "mjray: %s%3d%% done, %.1fs elapsed, ETA %s, %.2f Mrays/s%s\n", frame.c_str(), percent, elapsed,

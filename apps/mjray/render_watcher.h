@@ -49,6 +49,7 @@ class RenderWatcher {
   std::atomic<bool> finished_{false};
   ProgressEstimate estimate_;
   int last_percent_ = -1;      // of the last line without a terminal
+  std::string last_stage_;     // the stage the last line named ("" for none)
   double last_line_at_ = 0;    // its time
   std::thread thread_;
 };
