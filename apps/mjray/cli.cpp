@@ -207,7 +207,7 @@ Parser::Parser(CommandLine& cl) : cl_(cl) {
       {"--aa-threshold", [&](auto& o, auto& v) { cl.antialias_threshold = float(parse_real(o, v, 0, 1, "a number in (0, 1]")); }},
       {"--lua-memory", [&](auto& o, auto& v) { cl.load.lua_memory_bytes = parse_bytes(o, v); }},
       {"--scene-timeout", [&](auto& o, auto& v) {
-         cl.load.timeout_seconds = parse_real(o, v, 0, 1e6, "a number of seconds above 0, at most 1000000");
+         cl.load.timeout_seconds = v == "0" ? 0 : parse_real(o, v, 0, 1e6, "a number of seconds from 0 (no limit) to 1000000");
        }},
       {"--caustics", [&](auto& o, auto& v) { cl.caustic_photons = parse_photon_count(o, v); }},
       {"--gi", [&](auto& o, auto& v) { cl.global_photons = parse_photon_count(o, v); }},
@@ -431,7 +431,7 @@ options:
                        folder's tree and the working directory's); may be given several times
   --lua-memory SIZE    most memory the script's Lua state may use, e.g. 512MiB (default 4GiB;
                        0 = no limit)
-  --scene-timeout S    stop a script still running after S seconds (default: no limit)
+  --scene-timeout S    stop a script still running after S seconds (default 600; 0 = no limit)
   --watch              live preview: serve a page showing the render as it refines, and render
                        again whenever the script or a file it reads changes (Ctrl-C ends it)
   --port N             the page's port (default )" + std::to_string(kDefaultWatchPort) + R"(, or the next free one; 0 = any free port)

@@ -184,7 +184,8 @@ TEST_F(HardeningOutput, LuaMemoryOptionCapsTheScript) {
   const auto scene = write("scene.lua", "local t = {}\nwhile true do t[#t + 1] = string.rep('x', 1000) .. #t end\n");
   RunResult r = run({"--lua-memory", "32MiB", scene.string()});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "mjray: error: " + at(2) + ": the script needs more than 32 MiB of Lua memory (the --lua-memory limit)\n");
+  EXPECT_EQ(r.err, "mjray: error: " + at(2) + ": the script needs more than 32 MiB of memory (the --lua-memory limit, which counts the "
+                       "Lua state and what its gr.* calls keep)\n");
   r = run({"--lua-memory", "lots", scene.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "mjray: --lua-memory expects a size like 512MiB, 4GiB or a number of bytes, got 'lots'\n"
@@ -209,6 +210,14 @@ TEST_F(HardeningOutput, SceneTimeoutStopsEndlessScriptsEvenInsideALibraryCall) {
                        ": the script is still running 2 s after the 0.5 s --scene-timeout (stuck inside one library "
                        "call); stopping\n");
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
+  // A finalizer runs with no hook, also while the state closes: the watchdog watches that too.
+  scene = write("scene.lua", "local t = setmetatable({}, {__gc = function() while true do end end})\nt = nil\n" +
+                                 lit_sphere("'out.png'"));
+  r = run({"--unsafe-lua", "--scene-timeout", "0.5", scene.string()}, "timeout 60 ");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + scene.string() +
+                       ": the script is still running 2 s after the 0.5 s --scene-timeout (stuck inside one library "
+                       "call); stopping\n");
   r = run({"--scene-timeout", "soon", scene.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(listing(), "scene.lua");

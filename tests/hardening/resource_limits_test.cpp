@@ -43,7 +43,8 @@ TEST_F(HardeningLimits, LuaMemoryCapStopsTheScriptAtItsLineAndTheProcessCarriesO
   EXPECT_EQ(error_of("local t = {}\n"
                      "for i = 1, 1e9 do t[i] = string.rep('x', 100) .. i end\n" + render_call("gr.node('r')"),
                      options),
-            at(2) + "the script needs more than 64 MiB of Lua memory (the --lua-memory limit)");
+            at(2) + "the script needs more than 64 MiB of memory (the --lua-memory limit, which counts the Lua "
+                    "state and what its gr.* calls keep)");
   // The cap held: the process grew by far less than the script asked for (1e9 strings).
   EXPECT_LT(peak_rss_kib() - rss_before, 512 * 1024);
   // A script's own pcall gets the memory error, frees what it built, and goes on.
@@ -62,8 +63,53 @@ TEST_F(HardeningLimits, MemoryCapInsideABindingFailsAtTheScriptsNextAllocation) 
   options.lua_memory_bytes = size_t(1) << 20;
   const std::string message = error_of("local v, f = readobj('big.obj')\nlocal x = {}\n" + render_call("gr.node('r')"),
                                        options);
-  EXPECT_NE(message.find("of Lua memory (the --lua-memory limit)"), std::string::npos) << message;
+  EXPECT_NE(message.find("of memory (the --lua-memory limit"), std::string::npos) << message;
   EXPECT_EQ(message.rfind((dir_ / "scene.lua").string() + ":", 0), 0u) << message;
+}
+
+constexpr const char* kCapped =
+    "the script needs more than 16 MiB of memory (the --lua-memory limit, which counts the Lua state and what its "
+    "gr.* calls keep)";
+
+TEST_F(HardeningLimits, WhatGrCallsKeepCountsAgainstTheMemoryCap) {
+  // Each case keeps far more in C++ than in Lua: one 1 MB string named 2000 times, a mesh
+  // rebuilt from the same small tables, one graph snapshotted by many gr.render calls.
+  SceneLoadOptions options;
+  options.lua_memory_bytes = size_t(16) << 20;
+  const long rss_before = peak_rss_kib();
+  EXPECT_EQ(error_of("local name = string.rep('n', 1000000)\n"
+                     "for i = 1, 2000 do local n = gr.node(name) end\n", options),
+            at(2) + kCapped);
+  EXPECT_EQ(error_of("local v, f = {}, {}\n"
+                     "for i = 0, 2999 do v[#v + 1] = {i, 0, 0}; v[#v + 1] = {i, 1, 0}; v[#v + 1] = {i, 0, 1} end\n"
+                     "for i = 0, 2999 do f[#f + 1] = {3 * i, 3 * i + 1, 3 * i + 2} end\n"
+                     "local keep = {}\n"
+                     "for i = 1, 2000 do keep[i] = gr.mesh('m', v, f) end\n", options),
+            at(5) + kCapped);
+  EXPECT_EQ(error_of("root = gr.node('root')\n"
+                     "for i = 1, 2000 do root:add_child(gr.node(string.rep('x', 1000) .. i)) end\n"
+                     "for i = 1, 100000 do " + render_call() + " end\n", options),
+            at(3) + kCapped);
+  // A script cannot swallow the refusal and go on as if it had what it asked for.
+  EXPECT_EQ(error_of("local name = string.rep('n', 1000000)\n"
+                     "local ok = pcall(function() for i = 1, 2000 do local n = gr.node(name) end end)\n"
+                     "root = gr.node('root')\n" + render_call(), options),
+            at(2) + kCapped);
+  EXPECT_LT(peak_rss_kib() - rss_before, 256 * 1024);
+}
+
+TEST_F(HardeningLimits, FinalizersAreRefusedInTheSandbox) {
+  EXPECT_EQ(error_of("local t = setmetatable({}, {__gc = function() while true do end end})\n"),
+            at(1) + "setmetatable with a __gc finalizer is not allowed (finalizers run outside the script's time limit): "
+                    "scene scripts run sandboxed; run mjray with --unsafe-lua to allow it");
+  // Metatables without one are as usual.
+  EXPECT_EQ(load("local t = setmetatable({}, {__index = function() return 3 end})\nassert(t.x == 3)\n"
+                 "root = gr.node('root')\n" + render_call()).jobs.size(), 1u);
+}
+
+TEST_F(HardeningLimits, ScriptsHaveAGenerousTimeLimitByDefault) {
+  EXPECT_EQ(SceneLoadOptions{}.timeout_seconds, kDefaultSceneTimeoutSeconds);
+  EXPECT_GE(kDefaultSceneTimeoutSeconds, 60);
 }
 
 TEST_F(HardeningLimits, InstructionBudgetCannotBeSwallowedByPcall) {

@@ -27,6 +27,12 @@ struct TriangleMesh {
   std::vector<Point2> uvs;
   std::vector<std::array<MeshCorner, 3>> triangles;  ///< polygon (c0..cn) → (c0, ci-1, ci)
   size_t polygon_count = 0;  ///< faces as written, before triangulation
+
+  /// The bytes its arrays hold.
+  size_t memory_bytes() const {
+    return positions.size() * sizeof(Point3) + normals.size() * sizeof(Normal3) + uvs.size() * sizeof(Point2) +
+           triangles.size() * sizeof(triangles[0]);
+  }
 };
 
 }  // namespace mjray

@@ -147,6 +147,7 @@ std::shared_ptr<const TriangleMesh> read_extended_mesh_tables(lua_State* L, int 
   lua_settop(L, top);
   if (mesh->positions.empty() || mesh->triangles.empty())
     fail(fn, "a mesh needs at least one position and one face");
+  keep_bytes(L, mesh->memory_bytes());
   return mesh;
 }
 

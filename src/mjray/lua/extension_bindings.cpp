@@ -124,6 +124,7 @@ int gr_extendedmesh(lua_State* L) {
   }
   if (!use_uvs && !mesh->uvs.empty()) {
     auto copy = std::make_shared<TriangleMesh>(*mesh);
+    keep_bytes(L, copy->memory_bytes());
     copy->uvs.clear();
     for (auto& triangle : copy->triangles)
       for (auto& corner : triangle) corner.uv = -1;
@@ -132,6 +133,7 @@ int gr_extendedmesh(lua_State* L) {
   auto node = std::make_shared<LuaNode>();
   // The original project's scenes, like old-skeleton ones, compose transforms post-multiplied.
   node->old_skeleton_geometry = "the gr.extendedmesh";
+  keep_bytes(L, name.size());
   node->name = name;
   node->where = caller_location(L);
   node->mesh = std::move(mesh);

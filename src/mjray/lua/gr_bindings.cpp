@@ -31,6 +31,7 @@ int new_node(lua_State* L, const char* fn, std::optional<Shape> shape = std::nul
              Transform node_from_object = {}) {
   auto node = std::make_shared<LuaNode>();
   node->name = arg_string(L, 1, fn, "name");
+  keep_bytes(L, node->name.size());
   node->where = caller_location(L);
   node->shape = shape;
   node->node_from_object = node_from_object;
@@ -109,6 +110,7 @@ std::shared_ptr<const TriangleMesh> table_mesh(lua_State* L, const char* fn) {
   }
   if (mesh->positions.empty() || mesh->triangles.empty())
     throw ArgumentError(std::string(fn) + ": a mesh needs at least one vertex and one face");
+  keep_bytes(L, mesh->memory_bytes());
   return mesh;
 }
 
@@ -150,6 +152,7 @@ int gr_mesh(lua_State* L) {
 int node_add_child(lua_State* L) {
   auto& parent = arg_node(L, 1, "node:add_child", "self");
   auto& child = arg_node(L, 2, "node:add_child", "child");
+  keep_bytes(L, sizeof(child));
   parent->children.push_back(child);
   return 0;
 }
@@ -166,6 +169,7 @@ int node_translate(lua_State* L) {
   auto& node = arg_node(L, 1, "node:translate", "self");
   const Vector3 d{float(arg_number(L, 2, "node:translate", "x")), float(arg_number(L, 3, "node:translate", "y")),
                   float(arg_number(L, 4, "node:translate", "z"))};
+  keep_bytes(L, sizeof(Transform));
   node->transform_calls.push_back(Transform::translate(d));
   return 0;
 }
@@ -175,6 +179,7 @@ int node_scale(lua_State* L) {
   const auto x = float(arg_number(L, 2, "node:scale", "x")), y = float(arg_number(L, 3, "node:scale", "y")),
              z = float(arg_number(L, 4, "node:scale", "z"));
   if (x == 0 || y == 0 || z == 0) throw ArgumentError("node:scale: a scale factor of 0 flattens the node to nothing");
+  keep_bytes(L, sizeof(Transform));
   node->transform_calls.push_back(Transform::scale(x, y, z));
   return 0;
 }
@@ -187,6 +192,7 @@ int node_rotate(lua_State* L) {
   const auto at = axes.find(axis);
   if (axis.size() != 1 || at == std::string::npos)
     throw ArgumentError("node:rotate: axis must be 'x', 'y' or 'z', got '" + axis + "'");
+  keep_bytes(L, sizeof(Transform));
   node->transform_calls.push_back(Transform::rotate(int(at % 3), degrees));
   return 0;
 }
@@ -223,6 +229,9 @@ class Snapshot {
 
   explicit Snapshot(bool post_multiply) : post_multiply_(post_multiply) {}
 
+  /// The bytes of the copies made so far.
+  size_t bytes() const { return bytes_; }
+
   std::shared_ptr<const SceneNode> copy(const std::shared_ptr<LuaNode>& live, int depth = 0) {
     if (auto it = done_.find(live.get()); it != done_.end()) return it->second;
     if (!in_progress_.insert(live.get()).second)
@@ -232,6 +241,7 @@ class Snapshot {
       throw ArgumentError("gr.render: the scene graph is nested deeper than " + std::to_string(kMaxDepth) +
                           " levels (at node '" + live->name + "', created at " + live->where.to_string() + ")");
     auto node = std::make_shared<SceneNode>();
+    bytes_ += sizeof(SceneNode) + live->name.size() + live->children.size() * sizeof(node);
     node->name = live->name;
     node->where = live->where;
     node->shape = live->shape;
@@ -253,7 +263,10 @@ class Snapshot {
   std::shared_ptr<const Material> frozen_material(const std::shared_ptr<Material>& live) {
     if (!live) return nullptr;
     auto& copy = materials_[live.get()];
-    if (!copy) copy = std::make_shared<const Material>(*live);
+    if (!copy) {
+      copy = std::make_shared<const Material>(*live);
+      bytes_ += sizeof(Material);
+    }
     return copy;
   }
 
@@ -261,6 +274,7 @@ class Snapshot {
   std::unordered_map<const LuaNode*, std::shared_ptr<const SceneNode>> done_;
   std::unordered_map<const Material*, std::shared_ptr<const Material>> materials_;
   std::unordered_set<const LuaNode*> in_progress_;
+  size_t bytes_ = 0;
 };
 
 /// Checks the camera here so that the error names the gr.render line; the tests mirror
@@ -357,7 +371,9 @@ int gr_render(lua_State* L) {
 
   bool post = ctx.options.transform_order == TransformOrder::kPost;
   if (ctx.options.transform_order == TransformOrder::kAuto) post = automatic_transform_order(L, root, job.where);
-  job.root = Snapshot(post).copy(root);
+  Snapshot snapshot(post);
+  job.root = snapshot.copy(root);
+  keep_bytes(L, snapshot.bytes() + job.lights.size() * sizeof(Light));
   job.post_multiplied = post;
   ctx.description->jobs.push_back(std::move(job));
   return 0;

@@ -27,6 +27,7 @@ inline constexpr const char* kTextureType = "gr.texture";
 /// Pushes a userdata owning `value`, with the metatable of `type`.
 template <class T>
 void push_shared(lua_State* L, std::shared_ptr<T> value, const char* type) {
+  keep_bytes(L, sizeof(T));
   void* memory = lua_newuserdatauv(L, sizeof(std::shared_ptr<T>), 0);
   new (memory) std::shared_ptr<T>(std::move(value));
   luaL_setmetatable(L, type);

@@ -27,6 +27,11 @@ namespace mjray::lua {
 struct ScriptLimits {
   size_t memory_limit = 0;      ///< bytes; 0 = none
   size_t memory_used = 0;       ///< bytes the Lua state holds now
+  /// Bytes that gr.* calls keep on the C++ side for the script (nodes and their names, meshes,
+  /// images, snapshots), counted as they are made and never given back: what a script keeps
+  /// alive is kept to the end, in its gr.render snapshots.
+  size_t kept_bytes = 0;
+  bool kept_exceeded = false;   ///< a binding was refused memory: the load fails even if the script goes on
   bool enforcing = false;       ///< off while the libraries are installed
   /// Nonzero while a C++ binding runs: its own Lua allocations may pass the cap, since a Lua
   /// memory error would longjmp over its C++ locals; the script's next allocation fails.
@@ -58,6 +63,10 @@ inline void push_string_past_cap(lua_State* L, const std::string& text) {
   lua_pushlstring(L, text.data(), text.size());
   --limits.grace;
 }
+
+/// Counts `bytes` that a binding is about to keep for the script against --lua-memory, with
+/// the Lua state's own; past the cap, throws ArgumentError instead and the load fails.
+void keep_bytes(lua_State* L, size_t bytes);
 
 /// A node as the script builds it: mutable until a gr.render call snapshots it.
 struct LuaNode {

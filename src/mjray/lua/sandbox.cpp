@@ -188,6 +188,24 @@ int io_output(lua_State* L) {
   return call_original(L);
 }
 
+/// setmetatable(t, mt) without a __gc finalizer: Lua runs finalizers with no hooks, so no
+/// time or instruction limit reaches them, and some run only when the state closes.
+int finalizer_refused(lua_State* L) {
+  if (lua_type(L, 2) != LUA_TTABLE) return 0;  // the original reports bad arguments
+  lua_pushliteral(L, "__gc");
+  const bool has_finalizer = lua_rawget(L, 2) != LUA_TNIL;
+  lua_pop(L, 1);
+  if (has_finalizer)
+    throw ArgumentError(std::string("setmetatable with a __gc finalizer is not allowed (finalizers run outside the "
+                                    "script's time limit): ") + kUnsafeHint);
+  return 0;
+}
+
+int setmetatable_checked(lua_State* L) {
+  guarded<finalizer_refused>(L);
+  return call_original(L);
+}
+
 void wrap(lua_State* L, const char* table, const char* field, lua_CFunction wrapper) {
   if (table) lua_getglobal(L, table); else lua_pushglobaltable(L);
   lua_getfield(L, -1, field);
@@ -337,6 +355,7 @@ void install_sandbox(lua_State* L) {
   for (const char* field : {"loadlib", "searchpath"}) replace_with_refusal(L, "package", field);
   wrap(L, "io", "output", io_output);
   wrap(L, nullptr, "load", load_text_only);
+  wrap(L, nullptr, "setmetatable", setmetatable_checked);
 
   // require: preload, the scene's readable folders, the built-ins, and a refusal for native
   // modules; the package.path/cpath searchers go, so neither path can reach outside.

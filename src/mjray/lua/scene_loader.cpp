@@ -69,6 +69,7 @@ void add_warning(lua_State* L, const std::string& text) {
 std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path) {
   ObjSummary summary;
   auto mesh = std::make_shared<const TriangleMesh>(load_obj(path, &summary));
+  keep_bytes(L, mesh->memory_bytes());
   if (const std::string warning = check_obj_content(*mesh, summary, path.string()); !warning.empty()) add_warning(L, warning);
   return mesh;
 }
@@ -155,6 +156,13 @@ FileLocation running_location(lua_State* L, const std::filesystem::path& script)
   return {script.string(), 0};
 }
 
+/// The message of a script stopped by the --lua-memory cap.
+std::string memory_message(const ScriptLimits& limits) {
+  const FileLocation where = limits.memory_where.file.empty() ? FileLocation{limits.script.string(), 0} : limits.memory_where;
+  return where.to_string() + ": the script needs more than " + format_bytes(limits.memory_limit) +
+         " of memory (the --lua-memory limit, which counts the Lua state and what its gr.* calls keep)";
+}
+
 /// lua_Alloc with the --lua-memory cap. Shrinking never fails; growing fails past the cap
 /// (Lua then collects garbage and tries once more before raising its memory error).
 void* limited_alloc(void* ud, void* block, size_t old_size, size_t new_size) {
@@ -166,7 +174,7 @@ void* limited_alloc(void* ud, void* block, size_t old_size, size_t new_size) {
     return nullptr;
   }
   if (new_size > old_size && limits.memory_limit != 0 && limits.enforcing && limits.grace == 0 &&
-      limits.memory_used - old_size + new_size > limits.memory_limit) {
+      limits.memory_used - old_size + new_size + limits.kept_bytes > limits.memory_limit) {
     // Reading the call stack allocates nothing, and Lua keeps it consistent wherever it allocates.
     limits.memory_where = running_location(limits.L, limits.script);
     return nullptr;
@@ -270,6 +278,22 @@ int on_panic(lua_State* L) {
 
 }  // namespace
 
+void keep_bytes(lua_State* L, size_t bytes) {
+  ScriptLimits& limits = script_limits(L);
+  const auto over = [&] {
+    return limits.memory_limit != 0 && limits.enforcing &&
+           (bytes > limits.memory_limit || limits.memory_used + limits.kept_bytes + bytes > limits.memory_limit);
+  };
+  // As Lua's allocator does before it fails: collect the garbage, and ask again.
+  if (over()) lua_gc(L, LUA_GCCOLLECT);
+  if (over()) {
+    limits.memory_where = caller_location(L);
+    limits.kept_exceeded = true;
+    throw ArgumentError(memory_message(limits).substr(limits.memory_where.to_string().size() + 2));
+  }
+  limits.kept_bytes += bytes;
+}
+
 }  // namespace lua
 
 SceneDescription load_scene(const std::filesystem::path& script, const SceneLoadOptions& options) {
@@ -319,23 +343,24 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
                         std::chrono::duration<double>(options.timeout_seconds));
   lua_sethook(L, lua::budget_hook, LUA_MASKCOUNT, lua::kHookInterval);
   limits.enforcing = true;
-  int status = LUA_OK;
+  std::string error;
   {
+    // The state closes while the watchdog watches and the memory cap holds: finalizers run
+    // then, and Lua runs no hooks inside them.
     const lua::Watchdog watchdog(options.timeout_seconds, script.string());
-    status = luaL_loadfilex(L, script.c_str(), "t");
+    int status = luaL_loadfilex(L, script.c_str(), "t");
     if (status == LUA_OK) status = lua_pcall(L, 0, 0, 1);
-  }
-  limits.enforcing = false;
-  if (status != LUA_OK) {
-    if (limits.budget_exceeded) throw SceneError(limits.budget_message);
-    if (status == LUA_ERRMEM) {
-      const FileLocation where = limits.memory_where.file.empty() ? FileLocation{script.string(), 0} : limits.memory_where;
-      throw SceneError(where.to_string() + ": the script needs more than " + lua::format_bytes(limits.memory_limit) +
-                       " of Lua memory (the --lua-memory limit)");
+    if (limits.budget_exceeded) {
+      error = limits.budget_message;
+    } else if (status == LUA_ERRMEM || limits.kept_exceeded) {
+      error = lua::memory_message(limits);
+    } else if (status != LUA_OK) {
+      const char* message = lua_tostring(L, -1);
+      error = message ? message : script.string() + ": the script raised an error that is not a string";
     }
-    const char* message = lua_tostring(L, -1);
-    throw SceneError(message ? message : script.string() + ": the script raised an error that is not a string");
+    state.reset();
   }
+  if (!error.empty()) throw SceneError(error);
   if (description.jobs.empty()) throw SceneError(script.string() + ": the scene never calls gr.render");
   description.input_hashes = ctx.input_hashes.wait();
   return description;

@@ -23,6 +23,10 @@ enum class TransformOrder {
 /// below what would push a 24 GiB machine into swap with the render's own buffers.
 inline constexpr size_t kDefaultLuaMemoryBytes = size_t(4) << 30;
 
+/// Default limit on how long a script runs (--scene-timeout): far beyond what building any
+/// real scene takes, so that a script that never ends cannot keep mjray running for ever.
+inline constexpr double kDefaultSceneTimeoutSeconds = 600;
+
 /// How to run the script.
 struct SceneLoadOptions {
   bool unsafe_lua = false;  ///< give the script the full standard library and every file
@@ -41,7 +45,7 @@ struct SceneLoadOptions {
   /// Longest the script may run, in seconds (--scene-timeout); 0 = no limit. Checked between
   /// Lua instructions; a script stuck longer than max(2 s, half the timeout) beyond it inside
   /// one library call (e.g. a pathological string pattern) ends the process with exit code 1.
-  double timeout_seconds = 0;
+  double timeout_seconds = kDefaultSceneTimeoutSeconds;
   /// Most Lua VM instructions the script may run (deterministic, for tests and fuzzing);
   /// 0 = no limit.
   uint64_t instruction_limit = 0;

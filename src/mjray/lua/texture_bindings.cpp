@@ -62,6 +62,7 @@ int gr_filetexture(lua_State* L) {
   ImageTexture texture;
   try {
     texture.image = read_image(path);
+    keep_bytes(L, texture.image.pixels().size() * sizeof(Color));
     if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(texture.image);
   } catch (const OutputError& e) {
     throw ArgumentError(std::string(fn) + ": " + e.what());

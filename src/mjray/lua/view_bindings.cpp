@@ -44,6 +44,7 @@ std::shared_ptr<const Image> environment_image(lua_State* L, const std::string& 
   const std::filesystem::path path = input_file(L, fn, name);
   try {
     auto image = std::make_shared<Image>(read_image(path, {.keep_16_bits = true}));
+    keep_bytes(L, image->pixels().size() * sizeof(Color));
     if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(*image);
     return image;
   } catch (const OutputError& e) {
