@@ -4,10 +4,18 @@
 #include <atomic>
 #include <charconv>
 #include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <mutex>
 #include <thread>
 #include <type_traits>
 
+#include <arpa/inet.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 
 #include "http_module.h"
 
@@ -32,6 +40,77 @@ size_t frame_number(const std::string& digits) {
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
   return ec == std::errc() && end == digits.data() + digits.size() ? n : 0;
 }
+
+/// Ends every connection to local port `port` of this process: shutdown(2) makes their reads
+/// return at once without closing a descriptor another thread may still use.
+void end_connections_to(int port) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd", ec)) {
+    int fd = -1;
+    const std::string name = entry.path().filename().string();
+    if (std::from_chars(name.data(), name.data() + name.size(), fd).ec != std::errc()) continue;
+    sockaddr_storage local{}, peer{};
+    socklen_t local_size = sizeof local, peer_size = sizeof peer;
+    if (::getsockname(fd, reinterpret_cast<sockaddr*>(&local), &local_size) != 0) continue;
+    if (::getpeername(fd, reinterpret_cast<sockaddr*>(&peer), &peer_size) != 0) continue;  // the listening socket
+    const int local_port = local.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&local)->sin6_port)
+                           : local.ss_family == AF_INET ? ntohs(reinterpret_cast<sockaddr_in*>(&local)->sin_port)
+                                                        : -1;
+    if (local_port == port) ::shutdown(fd, SHUT_RDWR);
+  }
+}
+
+/// A thread for each connection, up to kMaxConnections at once (later ones wait for one to
+/// end): connections that dribble their headers in (slowloris) each hold only their own
+/// thread, never the one a browser's request needs.
+class ConnectionThreads final : public httplib::TaskQueue {
+ public:
+  static constexpr int kMaxConnections = 512;
+
+  explicit ConnectionThreads(int port) : port_(port) {}
+
+  void enqueue(std::function<void()> fn) override {
+    std::lock_guard lock(mutex_);
+    if (running_ < kMaxConnections) start(std::move(fn));
+    else waiting_.push_back(std::move(fn));
+  }
+
+  /// Waits for every connection to end, ending those that do not within a moment (a client
+  /// that keeps sending one header line a second would never end by itself).
+  void shutdown() override {
+    std::unique_lock lock(mutex_);
+    const auto done = [this] { return running_ == 0 && waiting_.empty(); };
+    while (!idle_.wait_for(lock, std::chrono::milliseconds(200), done)) {
+      lock.unlock();
+      end_connections_to(port_);
+      lock.lock();
+    }
+  }
+
+ private:
+  /// Runs `fn`, then whatever waits, on a thread of its own (called with mutex_ held).
+  void start(std::function<void()> fn) {
+    ++running_;
+    std::thread([this, fn = std::move(fn)]() mutable {
+      for (;;) {
+        fn();
+        std::lock_guard lock(mutex_);
+        if (waiting_.empty()) {
+          if (--running_ == 0) idle_.notify_all();
+          return;
+        }
+        fn = std::move(waiting_.front());
+        waiting_.pop_front();
+      }
+    }).detach();
+  }
+
+  int port_;
+  std::mutex mutex_;
+  std::condition_variable idle_;
+  std::deque<std::function<void()>> waiting_;
+  int running_ = 0;
+};
 
 class Listener final : public HttpListener {
  public:
@@ -67,9 +146,11 @@ class Listener final : public HttpListener {
 
  private:
   void configure(bool loopback) {
-    http_.new_task_queue = [] { return new httplib::ThreadPool(6); };
+    http_.new_task_queue = [this] { return new ConnectionThreads(port_); };
+    // A request on loopback or a local network arrives at once: a connection silent for a
+    // second is closed, so slow ones cannot pile up.
     http_.set_keep_alive_timeout(1);
-    http_.set_read_timeout(5);
+    http_.set_read_timeout(1);
     http_.set_payload_max_length(0);
     http_.set_default_headers({
         {"Cache-Control", "no-store"},

@@ -1,7 +1,18 @@
 // The live page's server in this process: it answers its page, the status and the images,
 // and 404 to everything else, whatever the path tries.
 
+#include <arpa/inet.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -86,6 +97,77 @@ TEST_F(PreviewServerTest, ATakenPortGivesTheNextFreeOne) {
   const auto res = client.Get("/stats.json");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200);
+}
+
+/// Connections that each send a request line, then one header line every `gap`, never
+/// finishing their headers (slowloris), from a thread of their own until destroyed.
+class SlowClients {
+ public:
+  SlowClients(int port, int count, std::chrono::milliseconds gap) {
+    for (int i = 0; i < count; ++i) {
+      const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+      sockaddr_in address{};
+      address.sin_family = AF_INET;
+      address.sin_port = htons(uint16_t(port));
+      address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+      if (fd >= 0 && ::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0) {
+        send_text(fd, "GET /stats.json HTTP/1.1\r\n");
+        sockets_.push_back(fd);
+      } else if (fd >= 0) {
+        ::close(fd);
+      }
+    }
+    thread_ = std::thread([this, gap] {
+      std::unique_lock lock(mutex_);
+      while (!stop_cv_.wait_for(lock, gap, [this] { return stopping_; }))
+        for (const int fd : sockets_) send_text(fd, "X-Slow: 1\r\n");
+    });
+  }
+  ~SlowClients() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    stop_cv_.notify_one();
+    thread_.join();
+    for (const int fd : sockets_) ::close(fd);
+  }
+  size_t connected() const { return sockets_.size(); }
+
+ private:
+  static void send_text(int fd, const std::string& text) { (void)::send(fd, text.data(), text.size(), MSG_NOSIGNAL); }
+
+  std::vector<int> sockets_;
+  std::mutex mutex_;
+  std::condition_variable stop_cv_;
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+TEST_F(PreviewServerTest, ThePageAnswersWhileManyConnectionsDribbleTheirHeaders) {
+  const SlowClients slow(server_.port(), 100, std::chrono::milliseconds(500));
+  ASSERT_EQ(slow.connected(), 100u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  for (int i = 0; i < 3; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    httplib::Client client("127.0.0.1", server_.port());
+    client.set_read_timeout(5);
+    const auto res = client.Get("/stats.json");
+    ASSERT_TRUE(res) << "request " << i;
+    EXPECT_EQ(res->status, 200);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0) << "request " << i;
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  }
+}
+
+TEST(PreviewServer, StoppingEndsConnectionsThatNeverFinishTheirRequest) {
+  LiveState page("scene.lua", {});
+  auto server = std::make_unique<PreviewServer>(page, "127.0.0.1", 0);
+  const SlowClients slow(server->port(), 20, std::chrono::milliseconds(300));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const auto start = std::chrono::steady_clock::now();
+  server.reset();
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 3.0);
 }
 
 TEST(PreviewServer, AnAddressNotOfThisMachineIsAClearError) {
