@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "mjray/io/image_codec.h"
+#include "mjray/io/image_reader.h"
 #include "support/scratch_files.h"
 #include "support/test_paths.h"
 
@@ -169,6 +170,22 @@ TEST_F(HardeningOutput, AUsersFileNamedLikeAResumeStateIsNeitherReplacedNorRemov
                        "(the resume state that an interrupted render writes beside its image)\n");
   EXPECT_EQ(test::read_file(dir_ / "x.png.mjray-state"), "my own notes");
   EXPECT_EQ(listing(), "scene.lua x.png.mjray-state");
+}
+
+TEST_F(HardeningOutput, ImagesRecordNoAbsolutePathOfTheFilesTheSceneRead) {
+  write("meshes/tri.obj", "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+  for (const char* image : {"out.png", "out.ppm", "out.jpg", "out.exr"}) {
+    SCOPED_TRACE(image);
+    const auto scene = write("scene.lua", lit_sphere(std::string("'") + image + "'", 8,
+                                                     "local t = gr.mesh('t', 'meshes/tri.obj')\n"));
+    ASSERT_EQ(run({scene.string()}).exit_code, 0);
+    const std::string bytes = test::read_file(dir_ / image);
+    EXPECT_EQ(bytes.find(dir_.string()), std::string::npos);
+    EXPECT_EQ(bytes.find(dir_.filename().string()), std::string::npos);
+    std::string fingerprint;
+    for (const auto& [key, value] : read_image_metadata(dir_ / image)) fingerprint += value;
+    EXPECT_NE(fingerprint.find("file meshes/tri.obj="), std::string::npos) << fingerprint;
+  }
 }
 
 TEST_F(HardeningOutput, MissingOutputFolderIsAClearErrorAndWritesNothing) {

@@ -40,9 +40,13 @@ std::map<std::string, std::string> lines_of(const std::string& text) {
 JobFingerprints::JobFingerprints(const SceneDescription& scene, const JobOptions& options)
     : scene_(scene), options_(options) {
   inputs_ = "scene " + scene.script.filename().string() + "=" + file_hash(scene.script) + "\n";
+  // Paths relative to the scene's folder: the fingerprint travels in every image's metadata,
+  // and must not tell whoever receives one where its maker keeps files.
+  const std::filesystem::path scene_folder = std::filesystem::absolute(scene.script).parent_path().lexically_normal();
   for (const auto& input : scene.inputs) {
     const auto known = scene.input_hashes.find(input);
-    inputs_ += "file " + input.string() + "=" + (known != scene.input_hashes.end() ? known->second : file_hash(input)) + "\n";
+    const std::string name = std::filesystem::absolute(input).lexically_normal().lexically_relative(scene_folder).string();
+    inputs_ += "file " + name + "=" + (known != scene.input_hashes.end() ? known->second : file_hash(input)) + "\n";
   }
   for (const auto& [name, value] : scene.defines) inputs_ += "-D " + name + "=" + value + "\n";
 }
