@@ -358,9 +358,22 @@ TEST_F(HardeningOutput, TwoRendersWritingOneFileWarn) {
   // --outdir keeps only the file names, so all three collide.
   r = run({"--outdir", (dir_ / "out").string(), scene.string()});
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find(at(10) + ": gr.render writes '" + (dir_ / "out/f.png").string() + "', which the gr.render at " + at(5) +
-                       " writes too; the later image replaces the earlier (--outdir keeps only the file name of each "
-                       "gr.render output)\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err, "mjray: warning: " + at(10) + ": gr.render writes '" + (dir_ / "out/f.png").string() +
+                       "', which the gr.render at " + at(5) + " writes too, and so does the one at " + at(15) +
+                       "; each image replaces the one before (--outdir keeps only the file name of each gr.render "
+                       "output)\n");
+}
+
+TEST_F(HardeningOutput, ManyRendersWritingOneFileGiveOneWarning) {
+  const auto scene = write("scene.lua", "for i = 1, 200 do\n" + lit_sphere("'f.png'", 1) + "end\n");
+  RunResult r = run({scene.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "mjray: warning: " + at(6) + ": gr.render writes '" + (dir_ / "f.png").string() +
+                       "', which the gr.render at " + at(6) + " writes too, and so do 198 more up to the one at " +
+                       at(6) + "; each image replaces the one before\n");
+  r = run({"--frames", "1-200:199", scene.string()});
+  EXPECT_EQ(r.err, "mjray: warning: " + at(6) + ": gr.render writes '" + (dir_ / "f.png").string() +
+                       "', which the gr.render at " + at(6) + " writes too; the later image replaces the earlier\n");
 }
 
 }  // namespace

@@ -238,6 +238,22 @@ TEST_F(LuaSandbox, LoadOfABinaryChunk) {
             at(2) + "load of a precompiled (binary) chunk is not allowed: " + kHint);
 }
 
+TEST_F(LuaSandbox, LoadAskedForBinaryChunksOnlyIsRefusedNotReadAsText) {
+  EXPECT_EQ(error_of("local f = load('return 1', nil, 'b')\n"),
+            at(1) + "load of precompiled (binary) chunks ('b') is not allowed: " + kHint);
+  write("part.lua", "return 1\n");
+  EXPECT_EQ(error_of("local f = loadfile('part.lua', 'b')\n"),
+            at(1) + "loadfile of precompiled (binary) chunks ('b') is not allowed: " + kHint);
+  EXPECT_EQ(result_of("local f = load('return 1', nil, 'bt')\n" + render_call("tostring(f())")), "1");
+}
+
+TEST_F(LuaSandbox, TerminalCommandsInMessagesAndPrintsAreShownEscaped) {
+  EXPECT_EQ(error_of("error('boom \\27[2J\\27[31mred')\n"), at(1) + "boom \\027[2J\\027[31mred");
+  testing::internal::CaptureStdout();
+  load("print('a\\27]0;title\\7b', 1, nil, 'c\\td')\n" + render_call());
+  EXPECT_EQ(testing::internal::GetCapturedStdout(), "a\\027]0;title\\007b\t1\tnil\tc\td\n");
+}
+
 TEST_F(LuaSandbox, DebugLibraryIsAbsent) {
   EXPECT_EQ(error_of("local info = debug.getinfo(1)\n"), at(1) + "attempt to index a nil value (global 'debug')");
   const std::string message = error_of("local d = require('debug')\n");

@@ -16,6 +16,33 @@ std::string error_message(const std::exception& e) {
   return e.what();
 }
 
+bool is_control_character(char c) {
+  const auto code = static_cast<unsigned char>(c);
+  return code < 0x20 || code == 0x7f;
+}
+
+std::string escape_control_characters(std::string_view text, bool keep_layout) {
+  std::string out;
+  for (const char c : text) {
+    if (keep_layout && (c == '\n' || c == '\t')) {
+      out += c;
+    } else if (c == '\\' && !keep_layout) {
+      out += "\\\\";
+    } else if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (is_control_character(c)) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\%03u", unsigned(static_cast<unsigned char>(c)));
+      out += escape;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 void check_failed(const char* condition, const char* file, int line) {
   std::fprintf(stderr, "mjray: internal error: check '%s' failed at %s:%d\n", condition, file,
                line);

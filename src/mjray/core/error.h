@@ -3,6 +3,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace mjray {
 
@@ -31,6 +32,15 @@ class OutputError : public std::runtime_error {
 /// What an exception says to a user: its message, or "out of memory" for std::bad_alloc, whose
 /// own message ("std::bad_alloc") names a C++ type.
 std::string error_message(const std::exception& e);
+
+/// A character that a terminal takes as a command rather than text (below 0x20, and DEL).
+bool is_control_character(char c);
+
+/// `text` made safe to show on a terminal: control characters as the Lua escapes that write
+/// them, in three digits ("\027", so that a digit after one is not read as part of it). With
+/// `keep_layout`, line breaks and tabs stay as they are (a message's own layout); without,
+/// they become "\n" and "\t" and backslashes are doubled, so that the text reads back as it was.
+std::string escape_control_characters(std::string_view text, bool keep_layout);
 
 [[noreturn]] void check_failed(const char* condition, const char* file, int line);
 

@@ -101,16 +101,30 @@ std::vector<std::string> check_outputs(const SceneDescription& scene, const Outp
   if (options.output) create_folder_of(*options.output);
   check_places(scene, options, jobs);
 
-  std::vector<std::string> warnings;
-  std::map<fs::path, size_t> first_writer;
+  // One warning per file that several gr.render calls write, however many they are.
+  std::map<fs::path, std::vector<size_t>> writers;
+  std::vector<fs::path> order;
   for (const size_t i : jobs) {
-    const fs::path path = output_path(scene, i, options);
-    const auto [it, first] = first_writer.emplace(real_place(path), i);
-    if (first) continue;
-    warnings.push_back(scene.jobs[i].where.to_string() + ": gr.render writes '" + path.string() +
-                       "', which the gr.render at " + scene.jobs[it->second].where.to_string() +
-                       " writes too; the later image replaces the earlier" +
-                       (options.outdir ? " (--outdir keeps only the file name of each gr.render output)" : ""));
+    auto& list = writers[real_place(output_path(scene, i, options))];
+    if (list.size() == 1) order.push_back(real_place(output_path(scene, i, options)));
+    list.push_back(i);
+  }
+  std::vector<std::string> warnings;
+  const std::string outdir_note = options.outdir ? " (--outdir keeps only the file name of each gr.render output)" : "";
+  for (const fs::path& place : order) {
+    const std::vector<size_t>& list = writers[place];
+    const auto where = [&](size_t k) { return scene.jobs[list[k]].where.to_string(); };
+    const std::string path = output_path(scene, list[1], options).string();
+    if (list.size() == 2)
+      warnings.push_back(where(1) + ": gr.render writes '" + path + "', which the gr.render at " + where(0) +
+                         " writes too; the later image replaces the earlier" + outdir_note);
+    else
+      warnings.push_back(where(1) + ": gr.render writes '" + path + "', which the gr.render at " + where(0) +
+                         " writes too, and so " +
+                         (list.size() == 3 ? "does the one at " + where(2)
+                                           : "do " + std::to_string(list.size() - 2) + " more up to the one at " +
+                                                 where(list.size() - 1)) +
+                         "; each image replaces the one before" + outdir_note);
   }
   return warnings;
 }

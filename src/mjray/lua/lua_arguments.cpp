@@ -10,33 +10,8 @@ namespace mjray::lua {
 
 namespace {
 
-bool is_control_character(char c) {
-  const auto code = static_cast<unsigned char>(c);
-  return code < 0x20 || code == 0x7f;
-}
-
-/// `text` as a message shows it: control characters and backslashes as the Lua escapes that
-/// write them (three digits, so that a digit after one is not read as part of it), so that
-/// none reaches the terminal raw and the text reads back as it was.
-std::string printable(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '\\') {
-      out += "\\\\";
-    } else if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (is_control_character(c)) {
-      char escape[8];
-      std::snprintf(escape, sizeof escape, "\\%03u", unsigned(static_cast<unsigned char>(c)));
-      out += escape;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
+/// `text` as a message shows it, reading back as it was (see escape_control_characters).
+std::string printable(std::string_view text) { return escape_control_characters(text, false); }
 
 }  // namespace
 

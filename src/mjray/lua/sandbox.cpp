@@ -136,9 +136,23 @@ int path_wrapper(lua_State* L) {
   return call_original(L);
 }
 
+/// Refuses a mode argument at `index` that asks for binary chunks only ('b'): forcing it to
+/// text would read the text the script meant to refuse.
+void refuse_binary_mode(lua_State* L, int index, const char* fn) {
+  if (lua_type(L, index) == LUA_TSTRING && std::strchr(lua_tostring(L, index), 't') == nullptr)
+    throw ArgumentError(std::string(fn) + " of precompiled (binary) chunks ('" + escape_control_characters(lua_tostring(L, index), false) +
+                        "') is not allowed: " + kUnsafeHint);
+}
+
+int loadfile_mode_checked(lua_State* L) {
+  refuse_binary_mode(L, 2, "loadfile");
+  return 0;
+}
+
 /// loadfile(name, mode, env) with mode forced to text: binary chunks can crash the VM.
 int loadfile_text_only(lua_State* L) {
   guarded<path_checked<kLoadfile, true>>(L);
+  if (!context(L).options.unsafe_lua) guarded<loadfile_mode_checked>(L);
   // Pad only up to the mode: an absent env must stay absent (nil would be an empty _ENV).
   lua_settop(L, std::max(lua_gettop(L), 2));
   lua_pushstring(L, "t");
@@ -149,8 +163,10 @@ int loadfile_text_only(lua_State* L) {
 int load_checked(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING && lua_tostring(L, 1)[0] == LUA_SIGNATURE[0])
     throw ArgumentError(std::string("load of a precompiled (binary) chunk is not allowed: ") + kUnsafeHint);
+  refuse_binary_mode(L, 3, "load");
   return 0;
 }
+
 
 /// load(chunk, chunkname, mode, env) with mode forced to text.
 int load_text_only(lua_State* L) {
@@ -374,6 +390,22 @@ void install_sandbox(lua_State* L) {
     lua_rawseti(L, -2, position++);
   }
   lua_pop(L, 2);
+
+  // print shows terminal commands a script writes ("\027[2J") as escapes, as messages do.
+  const char* escaping_print =
+      "local print, select, tostring, gsub, concat = print, select, tostring, string.gsub, table.concat\n"
+      "local function escape(c)\n"
+      "  if c == '\\n' or c == '\\t' then return c end\n"
+      "  return string.format('\\\\%03d', c:byte())\n"
+      "end\n"
+      "return function(...)\n"
+      "  local n, parts = select('#', ...), {...}\n"
+      "  for i = 1, n do parts[i] = gsub(tostring(parts[i]), '[%c\\127]', escape) end\n"
+      "  print(concat(parts, '\\t', 1, n))\n"
+      "end\n";
+  MJRAY_CHECK(luaL_loadstring(L, escaping_print) == LUA_OK);
+  lua_call(L, 0, 1);
+  lua_setglobal(L, "print");
 
   // The debug library can reach every upvalue and the registry: remove it.
   lua_pushnil(L);

@@ -356,7 +356,9 @@ SceneDescription load_scene(const std::filesystem::path& script, const SceneLoad
       error = lua::memory_message(limits);
     } else if (status != LUA_OK) {
       const char* message = lua_tostring(L, -1);
-      error = message ? message : script.string() + ": the script raised an error that is not a string";
+      // A script's message may hold terminal commands ("\027[2J"): shown escaped.
+      error = message ? escape_control_characters(message, true)
+                      : script.string() + ": the script raised an error that is not a string";
     }
     state.reset();
   }
