@@ -40,6 +40,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   mjray::SceneLoadOptions options;
   options.lua_memory_bytes = size_t(16) << 20;
   options.instruction_limit = 200'000;
+  options.timeout_seconds = 0;  // the instruction limit bounds the script; libFuzzer's -timeout the rest
   try {
     const mjray::SceneDescription scene = mjray::load_scene(path, options);
     for (const mjray::RenderJob& job : scene.jobs) {

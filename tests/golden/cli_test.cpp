@@ -156,10 +156,30 @@ TEST_F(GoldenCli, BadCommandLinesExitTwo) {
   r = run({"-D", "size=1", "--define", "size=2", scene.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "mjray: --define size=2: size is already defined (as size=1); define it once\n" + hint);
-  r = run({"--scene-timeout", "0", scene.string()});
+  r = run({"--scene-timeout", "-1", scene.string()});
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, "mjray: --scene-timeout expects a number of seconds above 0, at most 1000000, got '0'\n" + hint);
+  EXPECT_EQ(r.err, "mjray: --scene-timeout expects a number of seconds from 0 (no limit) to 1000000, got '-1'\n" + hint);
   EXPECT_EQ(listing(dir_), "scene.lua");  // nothing rendered
+}
+
+TEST_F(GoldenCli, AllowReadLetsAStrangersSceneReadAFolderOfModels) {
+  const fs::path models = test::make_temp_dir("cli-models");
+  test::write_file(models / "kit/tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+  write("scene.lua", "local t = gr.mesh('t', '" + (models / "kit/tri.obj").string() + "')\n" + tiny_scene());
+  // From the scene's folder: run from "/", every file would be in the working directory's tree.
+  const std::string from_scene_folder = "cd " + quoted(dir_.string());
+  RunResult r = run({(dir_ / "scene.lua").string()}, from_scene_folder);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(":1: gr.mesh: '" + (models / "kit/tri.obj").string() + "' is outside the folders a scene may read"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+  r = run({"--allow-read", models.string(), (dir_ / "scene.lua").string()}, from_scene_folder);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "out.png"));
+  r = run({"--allow-read", (models / "absent").string(), (dir_ / "scene.lua").string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("mjray: --allow-read expects a folder, and '" + (models / "absent").string() + "' is not one\n", 0),
+            0u) << r.err;
 }
 
 TEST_F(GoldenCli, HelpAndVersionExitZero) {
@@ -258,8 +278,10 @@ TEST_F(GoldenCli, AResumeStateThatCannotBeReadIsAClearError) {
   fs::create_directory(dir_ / "out.png.mjray-state");
   const RunResult r = run({"--quiet", "--resume", scene.string()});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_EQ(r.err, "mjray: error: " + (dir_ / "out.png.mjray-state").string() +
-                       ": cannot read the resume state file (remove it, or render without --resume)\n");
+  EXPECT_EQ(r.err, "mjray: error: " + (dir_ / "scene.lua").string() + ":5: gr.render: cannot write '" +
+                       (dir_ / "out.png.mjray-state").string() +
+                       "': something of that name is there, and it is not an mjray resume state; move it away (the "
+                       "resume state that an interrupted render writes beside its image)\n");
 }
 
 TEST_F(GoldenCli, NodesWithoutAMaterialAreNamedThreeAtATime) {

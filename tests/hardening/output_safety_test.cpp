@@ -166,7 +166,7 @@ TEST_F(HardeningOutput, AUsersFileNamedLikeAResumeStateIsNeitherReplacedNorRemov
   const RunResult r = run({scene.string()});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "mjray: error: " + at(5) + ": gr.render: cannot write '" + (dir_ / "x.png.mjray-state").string() +
-                       "': a file of that name is there, and it is not an mjray resume state; move it away "
+                       "': something of that name is there, and it is not an mjray resume state; move it away "
                        "(the resume state that an interrupted render writes beside its image)\n");
   EXPECT_EQ(test::read_file(dir_ / "x.png.mjray-state"), "my own notes");
   EXPECT_EQ(listing(), "scene.lua x.png.mjray-state");

@@ -48,8 +48,8 @@ void check_places(const SceneDescription& scene, const OutputOptions& options, c
         check_name_fits(state);
         std::error_code ec;
         if (fs::exists(state, ec) && !is_checkpoint_file(state))
-          throw OutputError("cannot write '" + state.string() + "': a file of that name is there, and it is not an mjray "
-                            "resume state; move it away");
+          throw OutputError("cannot write '" + state.string() + "': something of that name is there, and it is not an "
+                            "mjray resume state; move it away");
       } catch (const OutputError& e) {
         throw OutputError(std::string(e.what()) + " (the resume state that an interrupted render writes beside its image)");
       }
