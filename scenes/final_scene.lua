@@ -3,8 +3,8 @@
 -- glass ball, a marble ball in a ceramic bowl, a gilded frame around a painting on the wall,
 -- under a soft window light with a cool fill, encoded for display (sRGB).
 -- Render: build/mjray -s 4 -a 2 --gamma srgb scenes/final_scene.lua     (final_scene.png, 1280x720)
--- Meshes: scenes/meshes/{pint_glass,tumbler,bowl}.obj (scripts/make_glassware.py) and
--- picture_frame.obj (scripts/make_frame.py); the painting: scenes/textures/painting.png
+-- Meshes: scenes/Assets/meshes/{pint_glass,tumbler,bowl}.obj (scripts/make_glassware.py) and
+-- picture_frame.obj (scripts/make_frame.py); the painting: scenes/Assets/textures/painting.png
 -- (scripts/make_painting.py).
 -- Every node carries at most one transform, so either transform-order rule gives this scene.
 

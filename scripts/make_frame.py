@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
-"""Writes scenes/meshes/picture_frame.obj: a picture-frame moulding (a flat lip, a cove, a
+"""Writes scenes/Assets/meshes/picture_frame.obj: a picture-frame moulding (a flat lip, a cove, a
 half-round bead and a bevelled outer edge) swept around a rectangular opening with mitred
 corners, facing -z (toward a camera in front of a wall at z = 0), with smooth normals across
 its curves. Units: the opening is WIDTH x HEIGHT, centred on the origin.
 
-usage: make_frame.py [OUT.obj] [width height]   (default scenes/meshes/picture_frame.obj 3.2 2.4)
+usage: make_frame.py [OUT.obj] [width height]   (default scenes/Assets/meshes/picture_frame.obj 3.2 2.4)
 """
 import math
 import os
@@ -51,7 +51,7 @@ def normals_2d(points):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "meshes", "picture_frame.obj")
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "Assets", "meshes", "picture_frame.obj")
     width = float(sys.argv[2]) if len(sys.argv) > 3 else 3.2
     height = float(sys.argv[3]) if len(sys.argv) > 3 else 2.4
     pts = profile()

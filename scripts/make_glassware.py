@@ -7,7 +7,7 @@ that the solid lies to its left; it is swept around +y. Normals are smooth aroun
 and along the outline, and split where the outline turns by more than SPLIT_DEGREES (the rim,
 the edges of the base), so edges stay crisp while walls do not facet.
 
-usage: scripts/make_glassware.py [OUTDIR]   (default scenes/meshes)
+usage: scripts/make_glassware.py [OUTDIR]   (default scenes/Assets/meshes)
 """
 import math
 import os
@@ -123,7 +123,7 @@ def tumbler_profile(wall):
 
 
 def main():
-    outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "meshes")
+    outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "Assets", "meshes")
     write_obj(os.path.join(outdir, "pint_glass.obj"), "pint glass", pint_profile(), 96)
     write_obj(os.path.join(outdir, "bowl.obj"), "bowl", bowl_profile(), 72)
     write_obj(os.path.join(outdir, "tumbler.obj"), "tumbler with 1 mm walls", tumbler_profile(0.01), 96)

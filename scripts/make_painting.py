@@ -3,7 +3,7 @@
 mountains, hills and trees, in loose brush strokes. An 8-bit sRGB PNG made with the standard
 library only (zlib + struct); deterministic.
 
-usage: make_painting.py [OUT.png] [width height]   (default scenes/textures/painting.png 480 360)
+usage: make_painting.py [OUT.png] [width height]   (default scenes/Assets/textures/painting.png 480 360)
 """
 import math
 import os
@@ -117,7 +117,7 @@ def to_srgb8(linear):
 
 
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "textures", "painting.png")
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "Assets", "textures", "painting.png")
     width = int(sys.argv[2]) if len(sys.argv) > 3 else 480
     height = int(sys.argv[3]) if len(sys.argv) > 3 else 360
     rows = []

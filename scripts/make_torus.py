@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a torus as a Wavefront OBJ with per-vertex normals and UVs (for scenes/meshes/).
+"""Writes a torus as a Wavefront OBJ with per-vertex normals and UVs (for scenes/Assets/meshes/).
 
 usage: make_torus.py OUT.obj [major_radius minor_radius rings sides]
 """

@@ -1,9 +1,9 @@
--- Backgrounds in docs/scene-format.md: the equirectangular environment scenes/textures/sky.png
+-- Backgrounds in docs/scene-format.md: the equirectangular environment scenes/Assets/textures/sky.png
 -- (made by scripts/make_environment.py) behind a mirror ball, a glass ball and a matte ball;
 -- camera rays and reflected and refracted rays all see it.
 -- Render: build/mjray -r 4 -f 4 docs/images/gr_background.lua   (gr_background.png beside this file)
 
-gr.background('scenes/textures/sky.png')
+gr.background('scenes/Assets/textures/sky.png')
 local root = gr.node('root')
 local mirror = gr.nh_sphere('mirror', {-2.2, 1, 0}, 1)
 mirror:set_material(gr.reflectivematerial({0.05, 0.05, 0.05}, {0.6, 0.6, 0.6}, 80, 0.9))

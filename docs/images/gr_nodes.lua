@@ -33,7 +33,7 @@ local box = gr.nh_box('box', {0.6, 0, -0.7}, 1.4)
 box:set_material(red)
 root:add_child(box)
 
-local torus = gr.mesh('torus', 'scenes/meshes/torus.obj')  -- found through the parent folders
+local torus = gr.mesh('torus', 'scenes/Assets/meshes/torus.obj')  -- found through the parent folders
 torus:set_material(blue)
 torus:rotate('x', 60)
 torus:translate(3.4, 0.7, 0)

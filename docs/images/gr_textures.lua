@@ -15,7 +15,7 @@ local textures = {
   gr.perlinnoisemarbletexture({0.92, 0.92, 0.9}, {0.15, 0.15, 0.2}, 1.2),
   gr.perlinnoisewavytexture({0.9, 0.9, 0.95}, {0.2, 0.45, 0.25}, 2, 0.6),
   gr.perlinnoisewoodgraintexture({0.55, 0.32, 0.14}, {0.40, 0.22, 0.09}, 0.4),
-  gr.filetexture('scenes/textures/uv_grid.png'),
+  gr.filetexture('scenes/Assets/textures/uv_grid.png'),
 }
 for i, t in ipairs(textures) do
   local m = gr.material({1, 1, 1}, {0.3, 0.3, 0.3}, 40)

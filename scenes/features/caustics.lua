@@ -29,7 +29,7 @@ root:add_child(ball)
 
 local pint_at = gr.node('pint_at')
 pint_at:translate(-0.95, 0, 0.4)
-local pint = gr.mesh('pint', '../meshes/pint_glass.obj')
+local pint = gr.mesh('pint', 'meshes/pint_glass.obj')
 pint:set_material(glass)
 pint_at:add_child(pint)
 root:add_child(pint_at)

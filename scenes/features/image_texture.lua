@@ -1,5 +1,5 @@
 -- Feature scene: an image texture (gr.filetexture) on meshes with UVs and on a cube.
--- The texture (scenes/textures/uv_grid.png, made by scripts/make_texture.py) has an "F", an
+-- The texture (scenes/Assets/textures/uv_grid.png, made by scripts/make_texture.py) has an "F", an
 -- arrow pointing up (+v) and a white square at (u, v) = (0, 0). Left: a picture on a quad
 -- whose UVs span [0,1]², upright as OBJ UVs mean (v = 0 at the image's bottom). Floor: a quad
 -- whose UVs run to 3, so the image repeats. Right: a cube with the image on every face.

@@ -6,7 +6,7 @@
 local root = gr.node('root')
 local jade = gr.material({0.2, 0.65, 0.45}, {0.6, 0.6, 0.6}, 60)
 
-local flat = gr.mesh('flat', readobj('../meshes/torus.obj'))
+local flat = gr.mesh('flat', readobj('meshes/torus.obj'))
 flat:set_material(jade)
 local left = gr.node('left')
 left:translate(-1.5, 0, 0)
@@ -16,7 +16,7 @@ left:add_child(tilt_left)
 tilt_left:add_child(flat)
 root:add_child(left)
 
-local smooth = gr.extendedmesh('smooth', false, read_extended_obj('../meshes/torus.obj'))
+local smooth = gr.extendedmesh('smooth', false, read_extended_obj('meshes/torus.obj'))
 smooth:set_material(jade)
 local right = gr.node('right')
 right:translate(1.5, 0, 0)

@@ -1,5 +1,5 @@
 // Every ```lua example of README.md and docs/*.md is a whole scene that renders as written:
-// run from the repository's root (so that names like 'scenes/meshes/torus.obj' resolve, as
+// run from the repository's root (so that names like 'scenes/Assets/meshes/torus.obj' resolve, as
 // they do for a reader there), with no warning and exit code 0.
 
 #include <cstdlib>

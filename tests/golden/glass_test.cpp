@@ -99,7 +99,7 @@ TEST(GoldenGlass, OneMillimetreWallsAtTheDefaultDepthShowNoBlack) {
   // The tumbler's walls are 0.01 thick (1 mm if the table is 6 dm wide); rays caught inside
   // them by total internal reflection run out of depth there. Nothing in the scene is darker
   // than the ambient light on the table and the wall, so no pixel may be.
-  const TriangleMesh tumbler = load_obj(test::source_dir() / "scenes/meshes/tumbler.obj");
+  const TriangleMesh tumbler = load_obj(test::source_dir() / "scenes/Assets/meshes/tumbler.obj");
   const Image image = test::TestJob(glass_on_table(tumbler, 200, 150), JobOptions{}).render();
   int darkest = 255;
   for (int y = 0; y < image.height(); ++y)

@@ -193,18 +193,18 @@ TEST_F(LuaSandbox, AllowReadLetsTheScriptReadAFoldersTree) {
 }
 
 TEST_F(LuaSandbox, TheCs488FallbacksAreThoseExactFoldersNotTheParentsTrees) {
-  // The scene in dir_/course/a4; files in its parent and the parent's Assets/ are found as
-  // the course skeletons expect, but the parent's other subfolders are not readable.
+  // The scene in dir_/course/a4; files in its parent and the parent's Assets/ tree are found
+  // as the course skeletons expect, but the parent's other subfolders are not readable.
   const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   write("course/beside.obj", triangle);
-  write("course/Assets/asset.obj", triangle);
+  write("course/Assets/deep/asset.obj", triangle);
   write("course/private/secret.obj", triangle);
   const auto script = [&](const std::string& body) { return write("course/a4/scene.lua", body + render_call()); };
   const std::string scene_at = (dir_ / "course/a4/scene.lua").string() + ":1: ";
   const auto inputs = load_scene(script("local a = gr.mesh('a', 'beside.obj')\nlocal b = gr.mesh('b', 'asset.obj')\n"
                                         "local c = gr.mesh('c', '../beside.obj')\n"),
                                  {}).inputs;
-  EXPECT_EQ(inputs, (std::vector<fs::path>{dir_ / "course/beside.obj", dir_ / "course/Assets/asset.obj",
+  EXPECT_EQ(inputs, (std::vector<fs::path>{dir_ / "course/beside.obj", dir_ / "course/Assets/deep/asset.obj",
                                            dir_ / "course/beside.obj"}));
   try {
     load_scene(script("local s = gr.mesh('s', '../private/secret.obj')\n"), {});

@@ -56,10 +56,11 @@ ReadAccess::ReadAccess(const fs::path& script_dir, const std::vector<fs::path>& 
   trees_.push_back(scene_folder);
   trees_.push_back(real_place(fs::current_path()));
   for (const fs::path& folder : allowed_folders) trees_.push_back(real_place(folder));
-  // Compute: the fallback folders, each parent's Assets/ only where it is not a link elsewhere.
+  // Compute: the fallback folders: each parent folder itself, and its Assets/ tree where that
+  // is not a link elsewhere.
   for (fs::path dir = scene_folder.parent_path();; dir = dir.parent_path()) {
     exact_folders_.push_back(dir);
-    if (real_place(dir / "Assets") == dir / "Assets") exact_folders_.push_back(dir / "Assets");
+    if (real_place(dir / "Assets") == dir / "Assets") trees_.push_back(dir / "Assets");
     if (dir == dir.parent_path()) break;
   }
 }

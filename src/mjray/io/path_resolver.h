@@ -26,8 +26,9 @@ std::optional<std::filesystem::path> resolve_input(const std::filesystem::path& 
 
 /// The files a sandboxed script may read, judged on their real place (links and ".."
 /// resolved): anything in the scene's folder tree, the working directory's tree or the tree of
-/// a folder named with --allow-read; and files directly inside the CS 488 fallback folders
-/// (each parent folder of the scene's and its own `Assets/`), not in those folders' subfolders.
+/// a folder named with --allow-read; the CS 488 fallback folders: files directly inside each
+/// parent folder of the scene's (not in its other subfolders), and each parent's `Assets/`
+/// tree (where it is not a link to elsewhere).
 class ReadAccess {
  public:
   /// Everything is readable (--unsafe-lua).
