@@ -192,7 +192,7 @@ TEST_F(LuaSandbox, AllowReadLetsTheScriptReadAFoldersTree) {
   EXPECT_EQ(load(script, unsafe()).inputs, std::vector<fs::path>{models / "deep/m.obj"});
 }
 
-TEST_F(LuaSandbox, TheCs488FallbacksAreThoseExactFoldersNotTheParentsTrees) {
+TEST_F(LuaSandbox, TheCs488FallbacksAreTheParentsAndTheirAssetsNotTheParentsTrees) {
   // The scene in dir_/course/a4; files in its parent and the parent's Assets/ tree are found
   // as the course skeletons expect, but the parent's other subfolders are not readable.
   const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
@@ -201,7 +201,7 @@ TEST_F(LuaSandbox, TheCs488FallbacksAreThoseExactFoldersNotTheParentsTrees) {
   write("course/private/secret.obj", triangle);
   const auto script = [&](const std::string& body) { return write("course/a4/scene.lua", body + render_call()); };
   const std::string scene_at = (dir_ / "course/a4/scene.lua").string() + ":1: ";
-  const auto inputs = load_scene(script("local a = gr.mesh('a', 'beside.obj')\nlocal b = gr.mesh('b', 'asset.obj')\n"
+  const auto inputs = load_scene(script("local a = gr.mesh('a', 'beside.obj')\nlocal b = gr.mesh('b', 'deep/asset.obj')\n"
                                         "local c = gr.mesh('c', '../beside.obj')\n"),
                                  {}).inputs;
   EXPECT_EQ(inputs, (std::vector<fs::path>{dir_ / "course/beside.obj", dir_ / "course/Assets/deep/asset.obj",
