@@ -218,10 +218,5 @@ void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::fi
   write_file_atomically(path, out);
 }
 
-void check_statistics_output(const SceneDescription& scene, const std::filesystem::path& path) {
-  check_not_an_input(scene, path, {scene.script.string(), 0}, "--stats-json");
-  create_folder_of(path);
-  check_writable_place(path);
-}
 
 }  // namespace mjray

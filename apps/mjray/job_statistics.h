@@ -69,9 +69,4 @@ std::string statistics_json(const JobStatistics& s);
 /// Writes the list of job statistics as a JSON array of objects. Throws OutputError.
 void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path);
 
-/// Checks before rendering that --stats-json can go to `path`: not a file the scene reads, and
-/// a writable folder (created if missing, as --output's is: call it after every check that
-/// makes nothing). Throws SceneError or OutputError.
-void check_statistics_output(const SceneDescription& scene, const std::filesystem::path& path);
-
 }  // namespace mjray

@@ -11,6 +11,24 @@
 
 namespace mjray {
 
+LocalRunOptions local_run_options(const ReportOptions& report) {
+  LocalRunOptions run;
+  run.quiet = report.quiet;
+  run.print_stats = report.print_stats;
+  run.resume = report.resume;
+  return run;
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+}
+
+void print_plan_messages(const RunPlan& plan, bool quiet) {
+  print_warnings(plan.warnings);
+  if (!quiet)
+    for (const std::string& n : plan.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
+}
+
 std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, size_t index, const JobOptions& options,
                                                 const JobFingerprints& fingerprints, const LocalRunOptions& run,
                                                 double parse_seconds) {
@@ -29,7 +47,7 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
     const ExitOnInterrupt exit_on_interrupt;
     return PreparedJob(scene, index, options);
   }();
-  for (const auto& w : job.warnings()) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+  print_warnings(job.warnings());
   JobStatistics stats = prepared_job_statistics(job, parse_seconds);
   render_prepared_job(job, plan.state, options, fingerprint, run, stats);
   report_written(stats, run);

@@ -11,6 +11,8 @@
 #include "mjray/job/job_fingerprint.h"
 #include "mjray/job/job_options.h"
 #include "mjray/job/prepared_job.h"
+#include "mjray/job/run_options.h"
+#include "mjray/job/run_plan.h"
 #include "mjray/render/render_checkpoint.h"
 #include "mjray/render/tile_executor.h"
 #include "mjray/scene/scene_description.h"
@@ -35,6 +37,15 @@ struct LocalRunOptions {
   /// watch driver's adds a coarse preview and the live page, and throws to drop a stale render.
   std::function<bool(const PreparedJob& job, ImageRender& render)> run_render = nullptr;
 };
+
+/// What the command line's reporting options ask of each job's render.
+LocalRunOptions local_run_options(const ReportOptions& report);
+
+/// Prints the plan's warnings and (unless quiet) its notes, each on a line of its own.
+void print_plan_messages(const RunPlan& plan, bool quiet);
+
+/// Prints "mjray: warning: TEXT" for each of `warnings`.
+void print_warnings(const std::vector<std::string>& warnings);
 
 /// Thrown when the user interrupted a render (the partial image and state are written);
 /// the program exits 130.

@@ -38,11 +38,11 @@ JobStatistics render_tile_job(MpiWorld& world, const RunSetup& setup, size_t ind
 
   // Compute the job here while the others compute theirs; then its image on every rank.
   const PreparedJob job(setup.scene, index, setup.options);
-  for (const auto& w : job.warnings()) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
+  print_warnings(job.warnings());
   JobStatistics stats = prepared_job_statistics(job, setup.ranks[0].seconds_load);
   RankStatistics local;
   const int threads = resolve_thread_count(setup.options.render.threads);
-  render_prepared_job(job, plan.state, setup.options, setup.fingerprints.of(index), setup.run, stats,
+  render_prepared_job(job, plan.state, setup.options, setup.plan.fingerprints.of(index), setup.run, stats,
                       [&](const ImageSampler& sampler, const TileLayout& layout) {
                         return std::make_unique<TileDistributor>(world, sampler, layout, threads, local);
                       });
@@ -65,9 +65,9 @@ void run_coordinator(MpiWorld& world, const RunSetup& setup) {
   // Decide what --resume keeps, before building anything.
   std::vector<ResumePlan> plans(setup.scene.jobs.size());
   std::vector<size_t> jobs;
-  for (size_t i = 0; i < plans.size(); ++i) {
+  for (const size_t i : setup.plan.jobs) {
     const auto image = output_path(setup.scene, i, setup.options.outputs);
-    plans[i] = plan_resume(image, setup.fingerprints.of(i), setup.run.resume);
+    plans[i] = plan_resume(image, setup.plan.fingerprints.of(i), setup.run.resume);
     if (!plans[i].keep) jobs.push_back(i);
     else if (!setup.run.quiet) std::fprintf(stderr, "mjray: kept %s (complete)\n", image.string().c_str());
   }

@@ -11,7 +11,7 @@
 #include "job_statistics.h"
 #include "local_render.h"
 #include "mpi_world.h"
-#include "mjray/job/job_fingerprint.h"
+#include "mjray/job/run_plan.h"
 #include "mjray/job/job_options.h"
 #include "mjray/scene/scene_description.h"
 
@@ -21,7 +21,7 @@ namespace mjray {
 struct RunSetup {
   const SceneDescription& scene;
   const JobOptions& options;
-  const JobFingerprints& fingerprints;
+  const RunPlan& plan;  ///< the jobs to render (--frames) and their fingerprints
   LocalRunOptions run;
   std::optional<std::filesystem::path> stats_json;
   Distribution distribution = Distribution::kAuto;
@@ -46,7 +46,7 @@ class StatisticsLog {
   std::map<size_t, JobStatistics> jobs_;
 };
 
-/// Runs every job of the scene over the ranks. Throws Interrupted (the partial images and
+/// Runs every job of the plan over the ranks. Throws Interrupted (the partial images and
 /// their states written), RankFailed, SceneError or OutputError; the caller then ends the
 /// other ranks with end_run.
 void run_coordinator(MpiWorld& world, const RunSetup& setup);

@@ -48,7 +48,7 @@ class LocalFrames {
 /// Writes a frame that came back: the finished image, or the partial one and its state.
 void write_frame(const RunSetup& setup, FrameDoneMessage done, StatisticsLog& log) {
   const auto path = output_path(setup.scene, done.job, setup.options.outputs);
-  const std::string fingerprint = setup.fingerprints.of(done.job);
+  const std::string fingerprint = setup.plan.fingerprints.of(done.job);
   if (!done.finished) {
     RenderCheckpoint checkpoint = decode_checkpoint(done.checkpoint, path);
     checkpoint.fingerprint = fingerprint;

@@ -1,6 +1,5 @@
 #include "job_split.h"
 
-#include "cli.h"
 
 namespace mjray {
 
@@ -14,28 +13,17 @@ JobSplit split_jobs(const std::vector<size_t>& jobs, int ranks, Distribution dis
   return split;
 }
 
-Distribution take_distribution(std::vector<std::string>& args) {
-  Distribution distribution = Distribution::kAuto;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--") break;
-    std::string value;
-    if (args[i].rfind("--distribute=", 0) == 0) {
-      value = args[i].substr(13);
-      args.erase(args.begin() + std::ptrdiff_t(i));
-    } else if (args[i] == "--distribute") {
-      if (i + 1 >= args.size()) throw UsageError("--distribute needs a value");
-      value = args[i + 1];
-      args.erase(args.begin() + std::ptrdiff_t(i), args.begin() + std::ptrdiff_t(i + 2));
-    } else {
-      continue;
-    }
-    if (value == "auto") distribution = Distribution::kAuto;
-    else if (value == "tiles") distribution = Distribution::kTiles;
-    else if (value == "frames") distribution = Distribution::kFrames;
-    else throw UsageError("--distribute expects auto, tiles or frames, got '" + value + "'");
-    --i;
-  }
-  return distribution;
+OptionSpec distribution_option(Distribution& distribution) {
+  return {{"--distribute"}, "auto|tiles|frames",
+          "the unit of work handed out: tiles of one image (every rank renders each image), or whole images of an "
+          "animation (each rank renders its own); default auto: whole images while there are enough to keep every "
+          "rank busy, tiles for the rest",
+          [&distribution](RunOptions&, const std::string& option, const std::string& value) {
+            if (value == "auto") distribution = Distribution::kAuto;
+            else if (value == "tiles") distribution = Distribution::kTiles;
+            else if (value == "frames") distribution = Distribution::kFrames;
+            else throw UsageError(option + " expects auto, tiles or frames, got '" + value + "'");
+          }};
 }
 
 }  // namespace mjray

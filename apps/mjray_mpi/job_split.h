@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "mjray/job/option_table.h"
+
 namespace mjray {
 
 /// The unit of work: --distribute auto|tiles|frames.
@@ -21,8 +23,8 @@ struct JobSplit {
 /// the last jobs that would leave ranks idle; with one rank, or fewer jobs than ranks, tiles.
 JobSplit split_jobs(const std::vector<size_t>& jobs, int ranks, Distribution distribution);
 
-/// Removes --distribute VALUE / --distribute=VALUE from `args` and returns it (kAuto when
-/// absent). Throws UsageError for another value.
-Distribution take_distribution(std::vector<std::string>& args);
+/// mjray-mpi's own option, --distribute auto|tiles|frames, storing its value in `distribution`
+/// (which must outlive the parse).
+OptionSpec distribution_option(Distribution& distribution);
 
 }  // namespace mjray

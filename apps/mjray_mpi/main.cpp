@@ -24,7 +24,9 @@
 #include "mjray/core/available_memory.h"
 #include "mjray/core/error.h"
 #include "mjray/core/large_page_heap.h"
+#include "mjray/io/video_encoder.h"
 #include "mjray/job/job_outputs.h"
+#include "mjray/job/run_plan.h"
 #include "mjray/lua/scene_loader.h"
 
 namespace {
@@ -35,26 +37,19 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string usage() {
+std::string usage(const std::vector<OptionSpec>& own) {
   return R"(usage: mpirun -np N mjray-mpi [options] scene.lua
 
 Renders what mjray renders, over the N ranks of an MPI job, to the same bytes. Every rank runs
 the scene script and builds each scene it renders; rank 0 hands out the work, renders too, and
-writes every image, the resume state and the statistics. Progress, warnings and errors come
-from rank 0 only.
-
-mjray-mpi's own option:
-  --distribute auto|tiles|frames
-                       the unit of work handed out: tiles of one image (every rank renders
-                       each image), or whole images of an animation (each rank renders its
-                       own); default auto: whole images while there are enough to keep every
-                       rank busy, tiles for the rest
-  -j N                 threads per rank (default: the host's cores shared among its ranks)
+writes every image, the resume state, the statistics and the video. Progress, warnings and
+errors come from rank 0 only. -j N is the threads of each rank (default: the host's cores
+shared among its ranks). --watch is mjray's alone.
 
 mpirun's --quiet leaves out its own banners when a run fails or is interrupted; as root it
 needs --allow-run-as-root, and beyond the host's cores --oversubscribe.
 
-)" + usage_text();
+)" + usage_text(own, "mjray-mpi's own option");
 }
 
 void print_error(const std::string& message) { std::fprintf(stderr, "mjray: error: %s\n", message.c_str()); }
@@ -76,33 +71,41 @@ int main(int argc, char** argv) {
   const uint64_t memory_at_start = machine_available_bytes();
   const bool root = world.rank() == 0;
 
-  // Compute the command line: the driver's own option, then mjray's.
+  // Compute the command line: mjray's options and the driver's own.
   CommandLine cl;
   Distribution distribution = Distribution::kAuto;
+  const std::vector<OptionSpec> own = {distribution_option(distribution)};
   try {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    distribution = take_distribution(args);
-    cl = parse_command_line(args);
+    cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc), own);
+    if (cl.run.report.watch) throw UsageError("--watch: mjray-mpi does not serve the live preview; run mjray --watch instead");
   } catch (const UsageError& e) {
     if (!root) return 0;
     std::fprintf(stderr, "mjray: %s\n(run 'mjray-mpi --help' for the options)\n", e.what());
     return 2;
   }
   if (cl.show_help || cl.show_version) {
-    if (root && cl.show_help) std::fputs(usage().c_str(), stdout);
+    if (root && cl.show_help) std::fputs(usage(own).c_str(), stdout);
     else if (root) std::printf("mjray-mpi %s\n", MJRAY_VERSION);
     return 0;
   }
-  if (root)
-    for (const auto& w : cl.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-  if (cl.threads == 0) cl.threads = std::max(1, int(std::thread::hardware_concurrency()) / world.ranks_on_host());
+  if (root) print_warnings(cl.warnings);
+  RunOptions& options = cl.run;
+  if (options.job.render.threads == 0) {
+    const int threads = std::max(1, int(std::thread::hardware_concurrency()) / world.ranks_on_host());
+    options.job.accel.threads = options.job.render.threads = threads;
+    options.job.outputs.encoding.threads = threads;
+  }
+  // The ranks on one host make photon maps at the same time: each may hold its share of what
+  // the host had available when they started.
+  options.job.photons.processes_sharing_memory = world.ranks_on_host();
+  options.job.photons.memory_at_start_bytes = memory_at_start;
 
   // Compute the scene on every rank, and agree that all have it, and the same one.
   const auto start = std::chrono::steady_clock::now();
   SceneDescription scene;
   std::string load_error;
   try {
-    scene = load_scene(cl.scene, cl.load);
+    scene = load_scene(options.scene, options.load);
   } catch (const std::exception& e) {
     load_error = error_message(e);
   }
@@ -113,15 +116,7 @@ int main(int argc, char** argv) {
     for (const auto& e : errors) print_error(e);
     return 1;
   }
-  // The ranks on one host make photon maps at the same time: each may hold its share of what
-  // the host had available when they started.
-  const JobOptions options = [&] {
-    JobOptions o = job_options(cl);
-    o.photons.processes_sharing_memory = world.ranks_on_host();
-    o.photons.memory_at_start_bytes = memory_at_start;
-    return o;
-  }();
-  const JobFingerprints fingerprints(scene, options);
+  const JobFingerprints fingerprints(scene, options.job);
   if (const std::string verdict = agree_on_scene(world, all_fingerprints(fingerprints, scene.jobs.size()), ranks);
       !verdict.empty()) {
     if (!root) return 0;
@@ -130,20 +125,22 @@ int main(int argc, char** argv) {
   }
   // Every rank keeps going until rank 0 ends the run (mpirun signals them all on Ctrl-C).
   install_interrupt_handlers();
-  if (!root) return run_worker(world, scene, options, {world.rank(), world.host(), 0, load_seconds});
+  if (!root) return run_worker(world, scene, options.job, {world.rank(), world.host(), 0, load_seconds});
 
   try {
-    for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (!cl.quiet)
-      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
-    for (const auto& w : check_outputs(scene, options.outputs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
-    LocalRunOptions run;
-    run.quiet = cl.quiet;
-    run.print_stats = cl.print_stats;
-    run.resume = cl.resume;
-    const RunSetup setup{scene, options, fingerprints, run, cl.stats_json, distribution, ranks};
+    // The same preamble as mjray's: the jobs --frames selects, every check before rendering.
+    const RunPlan plan = plan_run(scene, options);
+    print_plan_messages(plan, options.report.quiet);
+    const RunSetup setup{scene, options.job, plan, local_run_options(options.report), options.report.stats_json,
+                         distribution, ranks};
     run_coordinator(world, setup);
+    if (const auto& video = options.report.video) {
+      std::vector<std::filesystem::path> files;
+      for (const size_t i : plan.jobs) files.push_back(output_path(scene, i, options.job.outputs));
+      encode_video(files, *video, options.report.fps);
+      if (!options.report.quiet)
+        std::fprintf(stderr, "mjray: wrote %s (%zu frames at %d fps)\n", video->c_str(), files.size(), options.report.fps);
+    }
   } catch (const Interrupted&) {
     end_run(world);
     return 130;

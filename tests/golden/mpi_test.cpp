@@ -228,6 +228,51 @@ TEST_F(MpiRender, AScriptThatDrawsRandomNumbersIsOneSceneOnEveryRank) {
   EXPECT_EQ(read_file(out), reference);
 }
 
+TEST_F(MpiRender, FramesCropSizeDefinesAndVideoGiveWhatMjrayGives) {
+  // Three frames whose spheres' count comes from -D: --frames 2-3 renders only those, at
+  // --size, only the --crop window, and --video joins them, as mjray does.
+  const auto scene = write_file(dir_ / "three.lua",
+                                "for i = 1, 3 do\n"
+                                "  local root = gr.node('root')\n"
+                                "  local m = gr.material({0.7, 0.4, 0.2}, {0.4, 0.4, 0.4}, 30)\n"
+                                "  for k = 0, spheres + 10 * i do\n"
+                                "    local s = gr.nh_sphere('s' .. k, {(k % 10) * 0.6 - 3, math.floor(k / 10) * 0.6 - 2, -8}, 0.25)\n"
+                                "    s:set_material(m)\n"
+                                "    root:add_child(s)\n"
+                                "  end\n"
+                                "  gr.render(root, 'f' .. i .. '.png', 48, 32, {0, 0, 5}, {0, 0, -1}, {0, 1, 0}, 60,\n"
+                                "            {0.2, 0.2, 0.2}, {gr.light({5, 5, 10}, {0.8, 0.8, 0.8}, {1, 0, 0})})\n"
+                                "end\n");
+  const std::vector<std::string> options = {"--quiet", "-a", "2", "--frames", "2-3", "--size", "96x64", "--crop",
+                                            "10,8,70,50", "-D", "spheres=40"};
+  const auto reference = dir_ / "ref", ranks = dir_ / "np2";
+  ASSERT_EQ(run(mjray(plus(options, {"--outdir", reference.string(), "--video", (reference / "v.gif").string(),
+                                     scene.string()}))), 0);
+  const auto log = dir_ / "log.txt";
+  ASSERT_EQ(run(plus(mpirun(2), plus(options, {"-j", "1", "--outdir", ranks.string(), "--video",
+                                               (ranks / "v.gif").string(), scene.string()})),
+                log), 0) << read_file(log);
+  EXPECT_FALSE(std::filesystem::exists(reference / "f1.png"));
+  EXPECT_FALSE(std::filesystem::exists(ranks / "f1.png"));
+  for (const char* frame : {"f2.png", "f3.png"}) {
+    const std::string bytes = read_file(ranks / frame);
+    EXPECT_FALSE(bytes.empty()) << frame;
+    EXPECT_EQ(bytes, read_file(reference / frame)) << frame;
+    EXPECT_EQ(read_image(ranks / frame).width(), 60) << frame;
+  }
+  EXPECT_FALSE(read_file(ranks / "v.gif").empty());
+  EXPECT_EQ(read_file(ranks / "v.gif"), read_file(reference / "v.gif"));
+}
+
+TEST_F(MpiRender, WatchIsRefusedWithTheUsageExitCode) {
+  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
+  const auto log = dir_ / "log.txt";
+  EXPECT_EQ(run(plus(mpirun(2), {"--watch", scene.string()}), log), 2);
+  EXPECT_NE(read_file(log).find("mjray: --watch: mjray-mpi does not serve the live preview; run mjray --watch instead\n"),
+            std::string::npos) << read_file(log);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "glass.png"));
+}
+
 TEST_F(MpiRender, CorpusSceneIsTheSameBytesForOneTwoAndThreeRanks) {
   MJRAY_REQUIRE_SHARED(shared);
   // A CS 488 scene that requires a module (buckyball.lua, read by every rank) and has instances.

@@ -99,9 +99,9 @@ CommandLine header_command_line(const fs::path& scene) {
 void expect_references(const fs::path& script, const std::string& name, const std::vector<size_t>& jobs) {
   CommandLine cl = header_command_line(script);
   // As the program runs them, from the repository's root (docs/images' scenes read scenes/Assets).
-  cl.load.allowed_read_folders.push_back(test::source_dir());
-  SceneDescription scene = load_scene(script, cl.load);
-  JobOptions options = job_options(cl);
+  cl.run.load.allowed_read_folders.push_back(test::source_dir());
+  SceneDescription scene = load_scene(script, cl.run.load);
+  JobOptions options = cl.run.job;
   options.outputs = {};
   for (RenderJob& job : scene.jobs) {
     // Keep the camera and aspect ratio; shrink the image.

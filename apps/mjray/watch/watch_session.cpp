@@ -14,7 +14,7 @@
 #include "progressive_render.h"
 #include "mjray/core/error.h"
 #include "mjray/job/job_outputs.h"
-#include "mjray/job/job_view.h"
+#include "mjray/job/run_plan.h"
 #include "mjray/lua/scene_loader.h"
 
 namespace mjray {
@@ -33,52 +33,44 @@ enum class RoundEnd { kFinished, kFailed, kStale, kInterrupted };
 
 /// Runs the script with Ctrl-C ending the process: a script stuck in a loop can then still be
 /// ended, and nothing is lost (nothing renders while it runs).
-SceneDescription load_interruptibly(const CommandLine& cl, std::vector<std::filesystem::path>& inputs_read) {
+SceneDescription load_interruptibly(const RunOptions& options, std::vector<std::filesystem::path>& inputs_read) {
   const ExitOnInterrupt exit_on_interrupt;
-  SceneLoadOptions load = cl.load;
+  SceneLoadOptions load = options.load;
   load.inputs_read = &inputs_read;
-  return load_scene(cl.scene, load);
+  return load_scene(options.scene, load);
 }
 
 /// One round: run the script, then render and write each frame as `mjray scene.lua` would,
 /// each progressively on the page. The files to watch are updated once the script ran.
-RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveState& page, FileWatcher& files) {
+RoundEnd render_round(const RunOptions& options, LiveState& page, FileWatcher& files) {
   page.begin_render();
   std::vector<std::filesystem::path> read;  // what the script read, also when it failed
   try {
     const auto start = std::chrono::steady_clock::now();
-    const SceneDescription scene = load_interruptibly(cl, read);
+    const SceneDescription scene = load_interruptibly(options, read);
     const double parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::vector<std::filesystem::path> watched = {cl.scene};
+    std::vector<std::filesystem::path> watched = {options.scene};
     watched.insert(watched.end(), scene.inputs.begin(), scene.inputs.end());
     files.watch(watched);
-    for (const auto& w : scene.warnings) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (!cl.quiet)
-      for (const auto& n : scene.notes) std::fprintf(stderr, "mjray: note: %s\n", n.c_str());
-    const std::vector<size_t> jobs = selected_jobs(scene, options.frames);
-    check_job_views(scene, jobs, options);
-    for (const auto& w : check_outputs(scene, options.outputs, jobs)) std::fprintf(stderr, "mjray: warning: %s\n", w.c_str());
-    if (cl.stats_json) check_statistics_output(scene, *cl.stats_json);
+    const RunPlan plan = plan_run(scene, options);
+    print_plan_messages(plan, options.report.quiet);
 
     std::vector<FrameDescription> frames;
-    for (const size_t i : jobs)
-      frames.push_back({output_path(scene, i, options.outputs).filename().string(), scene.jobs[i].width,
+    for (const size_t i : plan.jobs)
+      frames.push_back({output_path(scene, i, options.job.outputs).filename().string(), scene.jobs[i].width,
                         scene.jobs[i].height});
     page.set_frames(frames);
 
     // Compute each frame as the local driver does, with the coarse pass and the page added.
-    const JobFingerprints fingerprints(scene, options);
     std::vector<JobStatistics> statistics;
-    LocalRunOptions run;
-    run.quiet = cl.quiet;
-    run.print_stats = cl.print_stats;
+    LocalRunOptions run = local_run_options(options.report);
     run.snapshot_interval_seconds = 0;  // the page shows the progress; the file gets the result
-    for (size_t frame = 0; frame < jobs.size(); ++frame) {
-      run.run_render = ProgressiveRender(page, frame, options.render, [&files] { return files.changed(); });
-      const auto stats = render_job_locally(scene, jobs[frame], options, fingerprints, run, parse_seconds);
+    for (size_t frame = 0; frame < plan.jobs.size(); ++frame) {
+      run.run_render = ProgressiveRender(page, frame, options.job.render, [&files] { return files.changed(); });
+      const auto stats = render_job_locally(scene, plan.jobs[frame], options.job, plan.fingerprints, run, parse_seconds);
       page.finish_frame(frame, *stats);
       statistics.push_back(*stats);
-      if (cl.stats_json) write_statistics_json(statistics, *cl.stats_json);
+      if (options.report.stats_json) write_statistics_json(statistics, *options.report.stats_json);
     }
     page.finish_render();
     return RoundEnd::kFinished;
@@ -89,7 +81,7 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
   } catch (const std::exception& e) {
     // A script or output error: the page shows it and keeps the last good images. A module
     // or file the script read before it failed is watched too, so that fixing it is seen.
-    std::vector<std::filesystem::path> watched = {cl.scene};
+    std::vector<std::filesystem::path> watched = {options.scene};
     watched.insert(watched.end(), read.begin(), read.end());
     files.watch(watched);
     std::fprintf(stderr, "mjray: error: %s\n", error_message(e).c_str());
@@ -100,26 +92,26 @@ RoundEnd render_round(const CommandLine& cl, const JobOptions& options, LiveStat
 
 }  // namespace
 
-int run_watch_session(const CommandLine& cl) {
-  const JobOptions options = job_options(cl);
-  LiveState page(cl.scene.filename().string(), options.outputs.encoding);
-  const std::string address = cl.listen.value_or("127.0.0.1");
-  const PreviewServer server(page, address, cl.port.value_or(kDefaultWatchPort));
+int run_watch_session(const RunOptions& options) {
+  const ReportOptions& report = options.report;
+  LiveState page(options.scene.filename().string(), options.job.outputs.encoding);
+  const std::string address = report.listen.value_or("127.0.0.1");
+  const PreviewServer server(page, address, report.port.value_or(kDefaultWatchPort));
   if (!is_loopback_address(address))
-    std::fprintf(stderr, "mjray: warning: --listen %s: anyone who can reach this machine on port %d can see the renders\n",
-                 address.c_str(), server.port());
-  std::fprintf(stderr, "mjray: live preview of %s at %s (Ctrl-C to stop)\n", cl.scene.string().c_str(),
+    print_warnings({"--listen " + address + ": anyone who can reach this machine on port " + std::to_string(server.port()) +
+                    " can see the renders"});
+  std::fprintf(stderr, "mjray: live preview of %s at %s (Ctrl-C to stop)\n", options.scene.string().c_str(),
                server.url().c_str());
 
   install_interrupt_handlers();
   FileWatcher files;
-  files.watch({cl.scene});
+  files.watch({options.scene});
   for (;;) {
     files.accept();
-    const RoundEnd end = render_round(cl, options, page, files);
+    const RoundEnd end = render_round(options, page, files);
     if (end == RoundEnd::kInterrupted) return 130;
     if (end != RoundEnd::kStale && !files.wait_for_change(kPollInterval, interrupted)) return 0;
-    if (!cl.quiet) std::fprintf(stderr, "mjray: the scene changed; rendering again\n");
+    if (!report.quiet) std::fprintf(stderr, "mjray: the scene changed; rendering again\n");
     if (!files.settle(kQuietPeriod, interrupted)) return 0;
   }
 }

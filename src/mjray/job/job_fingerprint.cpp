@@ -2,6 +2,7 @@
 
 #include "mjray/io/file_hash.h"
 #include "mjray/job/job_view.h"
+#include "mjray/job/option_table.h"
 
 #include <charconv>
 #include <cstdio>
@@ -11,12 +12,6 @@
 namespace mjray {
 
 namespace {
-
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", value);
-  return text;
-}
 
 /// The shortest text that reads back as `value`.
 std::string float_text(float value) {
@@ -60,30 +55,13 @@ std::string JobFingerprints::of(size_t index) const {
   const ImageSize size = job_image_size(job, o.view);
   line("size", std::to_string(size.width) + "x" + std::to_string(size.height));
   line("transform order", job.post_multiplied ? "post" : "pre");
-  line("-r", std::to_string(o.integrator.max_reflection_depth));
-  line("-f", std::to_string(o.integrator.max_refraction_depth));
-  line("-s", std::to_string(o.integrator.area_light_samples));
-  line("-a", std::to_string(o.render.antialias_samples));
-  line("--aa-threshold", number(o.render.antialias_threshold));
-  // Only when not the default, so that states saved before the option existed still resume.
-  if (o.render.antialias_method == AntialiasMethod::kSubdivide) line("--aa-method", "subdivide");
   line("anti-aliasing passes", std::to_string(o.render.antialias_max_passes));
-  line("--seed", std::to_string(o.render.seed));
-  // Only when on, so that states saved before these options existed still resume.
-  if (o.photons.caustics()) line("--caustics", std::to_string(o.photons.caustic_photons));
-  if (o.photons.global_illumination()) line("--gi", std::to_string(o.photons.global_photons));
-  line("tile size", std::to_string(o.render.tile_size));
-  line("--gamma", o.outputs.encoding.gamma == OutputGamma::kSrgb ? "srgb" : "linear");  // decodes textures too
-  line("--spp", std::to_string(o.render.samples_per_pixel));
   const CameraDescription camera = job_camera(job, o.view);
   line("lens", camera.aperture_radius > 0 ? "aperture " + float_text(camera.aperture_radius) + ", focus " + float_text(camera.focus_distance)
                                           : "pinhole");
-  const auto& crop = o.render.crop;
-  line("--crop", crop ? std::to_string(crop->x0) + "," + std::to_string(crop->y0) + "," + std::to_string(crop->x1) + "," +
-                            std::to_string(crop->y1)
-                      : "whole image");
-  line("--bit-depth", std::to_string(o.outputs.encoding.bit_depth));
-  line("--jpeg-quality", std::to_string(o.outputs.encoding.jpeg_quality));
+  // Every option that changes the pixels or their encoding, as the option table records it.
+  for (const OptionSpec& spec : option_table())
+    if (spec.fingerprint) line(spec.names.back(), spec.fingerprint(o));
   return text;
 }
 

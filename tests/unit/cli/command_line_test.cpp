@@ -26,7 +26,7 @@ TEST(CommandLine, CameraImageAndAnimationOptionsReachTheJobOptions) {
   const CommandLine cl = parse({"--spp", "16", "--aperture=0.05", "--focus-distance", "4.5", "--size", "320x180",
                                 "--crop", "10,20,110,70", "--frames", "3-9:2", "-Dframe=7", "--define", "name=a=b",
                                 "--bit-depth", "16", "--jpeg-quality", "75", "--video", "out/m.MP4", "--fps", "30"});
-  const JobOptions o = job_options(cl);
+  const JobOptions& o = cl.run.job;
   EXPECT_EQ(o.render.samples_per_pixel, 16);
   EXPECT_EQ(o.view.aperture_radius, 0.05f);
   EXPECT_EQ(o.view.focus_distance, 4.5f);
@@ -41,32 +41,32 @@ TEST(CommandLine, CameraImageAndAnimationOptionsReachTheJobOptions) {
   EXPECT_EQ(o.frames->first, 3);
   EXPECT_EQ(o.frames->last, 9);
   EXPECT_EQ(o.frames->step, 2);
-  EXPECT_EQ(cl.load.defines, (std::vector<std::pair<std::string, std::string>>{{"frame", "7"}, {"name", "a=b"}}));
+  EXPECT_EQ(cl.run.load.defines, (std::vector<std::pair<std::string, std::string>>{{"frame", "7"}, {"name", "a=b"}}));
   EXPECT_EQ(o.outputs.encoding.bit_depth, 16);
   EXPECT_EQ(o.outputs.encoding.jpeg_quality, 75);
-  EXPECT_EQ(cl.video, std::filesystem::path("out/m.MP4"));
-  EXPECT_EQ(cl.fps, 30);
+  EXPECT_EQ(cl.run.report.video, std::filesystem::path("out/m.MP4"));
+  EXPECT_EQ(cl.run.report.fps, 30);
   EXPECT_TRUE(cl.warnings.empty());
 }
 
 TEST(CommandLine, DefaultsChangeNothing) {
-  const JobOptions o = job_options(parse({}));
+  const JobOptions o = parse({}).run.job;
   EXPECT_EQ(o.render.samples_per_pixel, 1);
   EXPECT_EQ(o.render.antialias_method, AntialiasMethod::kGrid);
   EXPECT_FALSE(o.view.aperture_radius || o.view.focus_distance || o.view.width || o.render.crop || o.frames);
   EXPECT_EQ(o.outputs.encoding.bit_depth, 8);
   const CommandLine one = parse({"--frames", "5"});
-  EXPECT_EQ(one.frames->first, 5);
-  EXPECT_EQ(one.frames->last, 5);
-  EXPECT_EQ(parse({"--aperture", "0"}).aperture_radius, 0.f);
+  EXPECT_EQ(one.run.job.frames->first, 5);
+  EXPECT_EQ(one.run.job.frames->last, 5);
+  EXPECT_EQ(parse({"--aperture", "0"}).run.job.view.aperture_radius, 0.f);
 }
 
 TEST(CommandLine, AaMethodReachesTheRenderSettings) {
-  const JobOptions o = job_options(parse({"-a", "3", "--aa-method", "subdivide"}));
+  const JobOptions o = parse({"-a", "3", "--aa-method", "subdivide"}).run.job;
   EXPECT_EQ(o.render.antialias_method, AntialiasMethod::kSubdivide);
   EXPECT_TRUE(o.render.subdivides());
-  EXPECT_FALSE(job_options(parse({"--aa-method", "subdivide"})).render.subdivides());  // without -a, nothing to do
-  EXPECT_EQ(job_options(parse({"-a", "3", "--aa-method", "grid"})).render.antialias_method, AntialiasMethod::kGrid);
+  EXPECT_FALSE(parse({"--aa-method", "subdivide"}).run.job.render.subdivides());  // without -a, nothing to do
+  EXPECT_EQ(parse({"-a", "3", "--aa-method", "grid"}).run.job.render.antialias_method, AntialiasMethod::kGrid);
 }
 
 TEST(CommandLine, MistakesSayWhatIsExpected) {
@@ -96,7 +96,7 @@ TEST(CommandLine, OptimalGridOverridesAGridSizeAndSaysSo) {
   for (const auto& args : {std::vector<std::string>{"-o", "-g", "20"}, std::vector<std::string>{"-g", "20", "-o"}}) {
     const CommandLine cl = parse(args);
     EXPECT_EQ(cl.warnings, std::vector<std::string>{"-g has no effect with -o (-o chooses the grid's size itself)"});
-    const JobOptions o = job_options(cl);
+    const JobOptions& o = cl.run.job;
     EXPECT_EQ(o.accel.kind, "grid");
     EXPECT_EQ(o.accel.grid_size, 0);  // the optimal size
   }

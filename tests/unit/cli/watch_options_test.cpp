@@ -9,14 +9,14 @@ namespace {
 
 TEST(WatchOptions, WatchPortAndListenAreRead) {
   const CommandLine plain = parse_command_line({"scene.lua"});
-  EXPECT_FALSE(plain.watch);
-  EXPECT_FALSE(plain.port);
+  EXPECT_FALSE(plain.run.report.watch);
+  EXPECT_FALSE(plain.run.report.port);
   const CommandLine cl = parse_command_line({"--watch", "--port", "9000", "--listen=::1", "-a", "2", "scene.lua"});
-  EXPECT_TRUE(cl.watch);
-  EXPECT_EQ(cl.port, 9000);
-  EXPECT_EQ(cl.listen, "::1");
-  EXPECT_EQ(cl.antialias_samples, 2);
-  EXPECT_EQ(parse_command_line({"--watch", "--port=0", "scene.lua"}).port, 0);
+  EXPECT_TRUE(cl.run.report.watch);
+  EXPECT_EQ(cl.run.report.port, 9000);
+  EXPECT_EQ(cl.run.report.listen, "::1");
+  EXPECT_EQ(cl.run.job.render.antialias_samples, 2);
+  EXPECT_EQ(parse_command_line({"--watch", "--port=0", "scene.lua"}).run.report.port, 0);
 }
 
 TEST(WatchOptions, MistakesAreUsageErrorsThatSayWhatIsWrong) {

@@ -1,4 +1,4 @@
-#include "video_encoder.h"
+#include "mjray/io/video_encoder.h"
 
 #include <cerrno>
 #include <cstdlib>
