@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake ninja-build pkg-config liblua5.4-dev libpng-dev libjpeg-dev zlib1g-dev libgtest-dev libembree-dev
-          libopenexr-dev ffmpeg openmpi-bin libopenmpi-dev libxxhash-dev)
+          libopenexr-dev ffmpeg openmpi-bin libopenmpi-dev libxxhash-dev nlohmann-json3-dev)
 # --watch: the HTTP server (header-only), and the browser that its test drives
 packages+=(libcpp-httplib-dev chromium)
 

@@ -8,8 +8,6 @@
 #include <sys/resource.h>
 
 #include "mjray/core/error.h"
-#include "mjray/io/atomic_file.h"
-#include "mjray/job/job_outputs.h"
 
 namespace mjray {
 
@@ -41,26 +39,6 @@ std::string photon_text(const JobStatistics& s) {
                 (unsigned long long)p.irradiance_samples, double(p.memory_bytes) / kMiB, p.seconds(), p.seconds_trace,
                 (unsigned long long)p.rays, p.seconds_build, p.seconds_irradiance);
   return text;
-}
-
-/// The photon fields of a job's JSON object (with a leading comma), or nothing.
-std::string photon_json(const JobStatistics& s) {
-  if (!s.photons) return "";
-  const PhotonStatistics& p = *s.photons;
-  const std::pair<const char*, double> fields[] = {
-      {"photons_caustic_emitted", double(p.caustic_emitted)}, {"photons_caustic_stored", double(p.caustic_stored)},
-      {"photons_global_emitted", double(p.global_emitted)},   {"photons_global_stored", double(p.global_stored)},
-      {"photon_irradiance_samples", double(p.irradiance_samples)}, {"photon_rays", double(p.rays)},
-      {"seconds_photons", p.seconds()},                        {"seconds_photon_trace", p.seconds_trace},
-      {"seconds_photon_build", p.seconds_build},               {"seconds_photon_irradiance", p.seconds_irradiance},
-      {"photon_map_bytes", double(p.memory_bytes)}};
-  std::string out;
-  for (const auto& [key, value] : fields) {
-    char field[96];
-    std::snprintf(field, sizeof field, ", \"%s\": %.10g", key, value);
-    out += field;
-  }
-  return out;
 }
 
 /// What anti-aliasing did to the pixels, for the statistics' pixels line.
@@ -154,69 +132,5 @@ std::string animation_summary(const std::vector<JobStatistics>& frames, size_t k
   const std::string paragraph = summary_text(all);
   return head + paragraph.substr(paragraph.find('\n') + 1);
 }
-
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
-      out += escaped;
-    } else out += c;
-  }
-  return out + "\"";
-}
-
-namespace {
-
-/// The "ranks" member of a job under MPI: one object per rank.
-std::string ranks_json(const std::vector<RankStatistics>& ranks) {
-  std::string out = ", \"ranks\": [";
-  for (size_t i = 0; i < ranks.size(); ++i) {
-    const RankStatistics& r = ranks[i];
-    char numbers[512];
-    std::snprintf(numbers, sizeof numbers,
-                  "\"rank\": %d, \"threads\": %d, \"seconds_load\": %.6f, \"seconds_build\": %.6f, "
-                  "\"seconds_rendering\": %.6f, \"tiles\": %llu, \"pixels_supersampled\": %llu, \"rays\": %llu, "
-                  "\"bytes_sent\": %llu",
-                  r.rank, r.threads, r.seconds_load, r.seconds_build, r.seconds_rendering, (unsigned long long)r.tiles,
-                  (unsigned long long)r.pixels_supersampled, (unsigned long long)r.rays, (unsigned long long)r.bytes_sent);
-    out += std::string(i ? ", " : "") + "{" + numbers + ", \"host\": " + json_string(r.host) + "}";
-  }
-  return out + "]";
-}
-
-}  // namespace
-
-std::string statistics_json(const JobStatistics& s) {
-  char numbers[1024];
-  std::snprintf(numbers, sizeof numbers,
-                "\"seconds_total\": %.6f, \"seconds_parse\": %.6f, \"seconds_build\": %.6f, "
-                "\"seconds_render\": %.6f, \"primitives\": %u, \"threads\": %d, \"rays_primary\": %llu, "
-                "\"rays_secondary\": %llu, \"rays_shadow\": %llu, \"rays_per_second\": %.1f, "
-                "\"pixels_supersampled\": %llu, \"peak_rss_bytes\": %llu, \"grid_resolution\": %d",
-                s.seconds_total(), s.seconds_parse, s.seconds_build, s.seconds_render, s.primitives,
-                s.render.threads, (unsigned long long)s.render.rays.primary,
-                (unsigned long long)s.render.rays.secondary, (unsigned long long)s.render.rays.shadow,
-                s.rays_per_second(), (unsigned long long)s.render.pixels_supersampled,
-                (unsigned long long)s.peak_rss_bytes, s.grid_resolution);
-  std::string out = "{\"image\": " + json_string(s.image) + ", \"accel\": " + json_string(s.accel) + ", " + numbers;
-  if (s.render.subdivided) out += ", \"antialias_method\": \"subdivide\"";  // pixels_supersampled is then 0
-  out += photon_json(s);
-  if (!s.ranks.empty()) out += ranks_json(s.ranks);
-  return out + "}";
-}
-
-void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path) {
-  std::string out = "[\n";
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    out += "  " + statistics_json(jobs[i]);
-    out += i + 1 < jobs.size() ? ",\n" : "\n";
-  }
-  out += "]\n";
-  write_file_atomically(path, out);
-}
-
 
 }  // namespace mjray

@@ -60,13 +60,5 @@ std::string frame_line(const JobStatistics& s, const std::string& frame, bool de
 /// "mjray: rendered 24 frames (2 kept) in 12.3s", or with `detailed` the paragraph of
 /// summary_text over all of them.
 std::string animation_summary(const std::vector<JobStatistics>& frames, size_t kept, bool detailed);
-/// `text` as a JSON string literal, quotes included.
-std::string json_string(const std::string& text);
-
-/// One job's statistics as a JSON object on one line (the elements of write_statistics_json).
-std::string statistics_json(const JobStatistics& s);
-
-/// Writes the list of job statistics as a JSON array of objects. Throws OutputError.
-void write_statistics_json(const std::vector<JobStatistics>& jobs, const std::filesystem::path& path);
 
 }  // namespace mjray

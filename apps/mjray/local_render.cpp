@@ -5,7 +5,6 @@
 #include "interrupts.h"
 #include "job_images.h"
 #include "render_watcher.h"
-#include "mjray/accel/uniform_grid.h"
 #include "mjray/job/job_outputs.h"
 #include "mjray/render/image_render.h"
 
@@ -61,38 +60,47 @@ JobStatistics prepared_job_statistics(const PreparedJob& job, double parse_secon
   stats.seconds_build = job.build_seconds();
   stats.primitives = job.world().primitive_count();
   stats.accel = std::string(job.accelerator().name());
-  if (const auto* grid = dynamic_cast<const UniformGrid*>(&job.accelerator())) stats.grid_resolution = grid->resolution();
+  stats.grid_resolution = job.grid_resolution();
   if (job.photon_statistics()) stats.photons = *job.photon_statistics();
   return stats;
+}
+
+RenderOutcome render_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const RenderSettings& settings,
+                         const std::function<bool(ImageRender& render)>& run, const TileExecutorFactory& executor) {
+  ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), settings, executor);
+  if (state) render.resume_from(*state);
+  RenderOutcome outcome;
+  outcome.finished = run(render);
+  outcome.stats = render.stats();
+  if (outcome.finished) outcome.image = render.image();
+  else outcome.checkpoint = render.checkpoint();
+  return outcome;
 }
 
 void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const JobOptions& options,
                          const std::string& fingerprint, const LocalRunOptions& run, JobStatistics& stats,
                          const TileExecutorFactory& executor) {
-  // Compute the image, resuming from the saved state when there is one.
-  ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render, executor);
-  if (state) render.resume_from(*state);
-  bool finished = false;
-  {
+  // Compute the image, watched (progress, snapshots, Ctrl-C), resuming from the saved state.
+  RenderOutcome outcome = render_job(job, state, options.render, [&](ImageRender& render) {
     const PixelRect& traced = render.region();
     RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding,
                                                  options.render, traced.x1 - traced.x0, traced.y1 - traced.y0, run.frame});
-    finished = run.run_render ? run.run_render(job, render) : render.run();
+    const bool finished = run.run_render ? run.run_render(job, render) : render.run();
     if (finished) watcher.finish();
-  }
-  stats.render = render.stats();
+    return finished;
+  }, executor);
+  stats.render = outcome.stats;
   stats.seconds_render = stats.render.seconds;
 
-  if (!finished) {
+  if (!outcome.finished) {
     // Keep what is done: the partial image and the state to resume from.
-    RenderCheckpoint checkpoint = render.checkpoint();
-    checkpoint.fingerprint = fingerprint;
-    write_interrupted_image(checkpoint, job.output(), options.outputs.encoding);
+    outcome.checkpoint.fingerprint = fingerprint;
+    write_interrupted_image(outcome.checkpoint, job.output(), options.outputs.encoding);
     throw Interrupted{};
   }
   EncodeOptions encoding = options.outputs.encoding;
   encoding.render_seconds = stats.seconds_render;
-  write_finished_image(render.image(), job.output(), encoding, fingerprint);
+  write_finished_image(outcome.image, job.output(), encoding, fingerprint);
   stats.peak_rss_bytes = peak_rss_bytes();
 }
 

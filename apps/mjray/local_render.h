@@ -61,6 +61,20 @@ std::optional<JobStatistics> render_job_locally(const SceneDescription& scene, s
 /// What is known of a prepared job before it renders: build time, primitives, accelerator.
 JobStatistics prepared_job_statistics(const PreparedJob& job, double parse_seconds);
 
+/// How a prepared job's render ended: its figures, and the image, or the state to resume from.
+struct RenderOutcome {
+  bool finished = false;
+  RenderStats stats;
+  Image image;                  ///< when finished
+  RenderCheckpoint checkpoint;  ///< when stopped (without its fingerprint)
+};
+
+/// Renders a prepared job, continuing from `state` when given, on the executor that `executor`
+/// makes (this process's threads when empty); `run` runs the render (render.run(), with what a
+/// driver adds around it) and returns whether it finished. What every driver's render shares.
+RenderOutcome render_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const RenderSettings& settings,
+                         const std::function<bool(ImageRender& render)>& run, const TileExecutorFactory& executor = {});
+
 /// Renders a prepared job, continuing from `state` when given, on the executor that
 /// `executor` makes (this process's threads when empty), watched and interruptible; writes
 /// the finished image, or the partial one and its state and then throws Interrupted. Adds the

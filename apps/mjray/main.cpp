@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "cli.h"
+#include "mjray/core/seconds_since.h"
 #include "interrupts.h"
 #include "job_statistics.h"
+#include "statistics_json.h"
 #include "local_render.h"
 #include "watch/watch_session.h"
 #include "mjray/core/error.h"
@@ -32,7 +34,7 @@ void render_locally(const RunOptions& options) {
     const ExitOnInterrupt exit_on_interrupt;  // nothing to keep yet: Ctrl-C ends at once
     return load_scene(options.scene, options.load);
   }();
-  const double parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double parse_seconds = seconds_since(start);
   const RunPlan plan = plan_run(scene, options);
   print_plan_messages(plan, options.report.quiet);
 

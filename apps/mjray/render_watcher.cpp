@@ -9,6 +9,7 @@
 
 #include "interrupts.h"
 #include "mjray/core/error.h"
+#include "mjray/core/seconds_since.h"
 
 namespace mjray {
 
@@ -53,7 +54,6 @@ RenderWatcher::~RenderWatcher() {
 void RenderWatcher::loop() {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto last_snapshot = start, last_report = start, last_share = start;
   double share_interval = kShareInterval;
   for (;;) {

@@ -9,6 +9,7 @@
 
 #include "job_split.h"
 #include "job_statistics.h"
+#include "statistics_json.h"
 #include "local_render.h"
 #include "mpi_world.h"
 #include "mjray/job/run_plan.h"

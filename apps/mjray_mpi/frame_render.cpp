@@ -21,29 +21,25 @@ FrameOutcome FrameRender::run(const SceneDescription& scene, size_t index, const
   try {
     const PreparedJob job(scene, index, options);
     JobStatistics stats = prepared_job_statistics(job, rank.seconds_load);
-    ImageRender render(job.camera(), job.width(), job.height(), job.integrator(), options.render);
-    if (state) render.resume_from(*state);
-
     // Compute the image unless a stop came first.
-    bool finished = false;
-    {
+    RenderOutcome rendered = render_job(job, state, options.render, [&](ImageRender& render) {
       std::unique_lock lock(mutex_);
-      if (!stop_) {
-        current_ = &render;
-        lock.unlock();
-        finished = render.run();
-        lock.lock();
-        current_ = nullptr;
-      }
-    }
-    stats.render = render.stats();
+      if (stop_) return false;
+      current_ = &render;
+      lock.unlock();
+      const bool finished = render.run();
+      lock.lock();
+      current_ = nullptr;
+      return finished;
+    });
+    stats.render = rendered.stats;
     stats.seconds_render = stats.render.seconds;
     stats.peak_rss_bytes = peak_rss_bytes();
 
     // Compute what this rank did, and the image or the state to resume from.
     FrameDoneMessage& done = outcome.done;
     done.job = uint32_t(index);
-    done.finished = finished;
+    done.finished = rendered.finished;
     RankStatistics r = rank;
     r.threads = stats.render.threads;
     r.seconds_build = job.build_seconds();
@@ -51,13 +47,12 @@ FrameOutcome FrameRender::run(const SceneDescription& scene, size_t index, const
     r.pixels_supersampled = stats.render.pixels_supersampled;
     r.rays = stats.render.rays.total();
     const size_t done_before = state ? count_done(state->tile_done) : 0;
-    if (finished) {
-      done.image = render.image();
+    if (rendered.finished) {
+      done.image = std::move(rendered.image);
       r.tiles = size_t(TileLayout{job.width(), job.height(), std::max(1, options.render.tile_size)}.count()) - done_before;
     } else {
-      const RenderCheckpoint checkpoint = render.checkpoint();
-      r.tiles = count_done(checkpoint.tile_done) - done_before;
-      done.checkpoint = encode_checkpoint(checkpoint);
+      r.tiles = count_done(rendered.checkpoint.tile_done) - done_before;
+      done.checkpoint = encode_checkpoint(rendered.checkpoint);
     }
     stats.ranks = {r};
     done.stats = std::move(stats);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "agreement.h"
+#include "mjray/core/seconds_since.h"
 #include "cli.h"
 #include "coordinator.h"
 #include "interrupts.h"
@@ -32,10 +33,6 @@
 namespace {
 
 using namespace mjray;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string usage(const std::vector<OptionSpec>& own) {
   return R"(usage: mpirun -np N mjray-mpi [options] scene.lua

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <utility>
 
+#include "mjray/core/seconds_since.h"
+
 namespace mjray {
 
 UnitPool::UnitPool(const ImageSampler& sampler, const TileLayout& layout, int threads)
@@ -66,7 +68,7 @@ void UnitPool::work(int thread) {
     result.rays.primary -= before.primary;
     result.rays.secondary -= before.secondary;
     result.rays.shadow -= before.shadow;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = seconds_since(start);
 
     lock.lock();
     done_.seconds_rendering += seconds;

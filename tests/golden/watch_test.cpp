@@ -91,10 +91,14 @@ TEST_F(GoldenWatch, ServesThePageAPngOfTheRightSizeAndTheStatisticsAsJson) {
   EXPECT_EQ(image.width(), 96);
   EXPECT_EQ(image.height(), 72);
 
-  EXPECT_NE(done->json.find("\"scene\": \"scene.lua\""), std::string::npos) << done->json;
-  EXPECT_NE(done->json.find("\"image\": \"out.png\", \"number\": 1, \"width\": 96, \"height\": 72"), std::string::npos);
-  EXPECT_NE(done->json.find("\"phase\": \"done\", \"statistics\": {\"image\": "), std::string::npos) << done->json;
-  EXPECT_NE(done->json.find("\"rays_primary\": "), std::string::npos);
+  EXPECT_EQ(done->data["scene"], "scene.lua") << done->json;
+  const auto frame = done->frame(1);
+  EXPECT_EQ(frame["image"], "out.png");
+  EXPECT_EQ(frame["width"], 96);
+  EXPECT_EQ(frame["height"], 72);
+  EXPECT_EQ(frame["phase"], "done") << done->json;
+  EXPECT_EQ(frame["statistics"]["image"], "out.png") << done->json;
+  EXPECT_GT(frame["statistics"]["rays_primary"].get<uint64_t>(), 0u);
   EXPECT_TRUE(fs::exists(dir_ / "out.png"));
 
   // No request reaches a file, not even the scene's own.
@@ -118,9 +122,10 @@ TEST_F(GoldenWatch, FramesSelectsTheRendersThePageShowsAndWrites) {
   auto w = watch({"--frames", "2-3"});
   const auto done = w->wait_until_done();
   ASSERT_TRUE(done) << w->process().log();
-  EXPECT_NE(done->json.find("\"image\": \"b.png\", \"number\": 1, \"width\": 48, \"height\": 36"), std::string::npos)
-      << done->json;
-  EXPECT_NE(done->json.find("\"image\": \"c.png\", \"number\": 2"), std::string::npos) << done->json;
+  EXPECT_EQ(done->frame(1)["image"], "b.png") << done->json;
+  EXPECT_EQ(done->frame(1)["width"], 48);
+  EXPECT_EQ(done->frame(1)["height"], 36);
+  EXPECT_EQ(done->frame(2)["image"], "c.png") << done->json;
   EXPECT_EQ(done->json.find("out.png"), std::string::npos) << done->json;
   EXPECT_EQ(decoded(w->frame_png(2)).width(), 48);
   EXPECT_TRUE(fs::exists(dir_ / "b.png"));
@@ -316,7 +321,7 @@ TEST_F(GoldenWatch, CtrlCDuringARenderKeepsThePartialImageAndItsStateAndExits130
   write("scene.lua", slow_scene());
   auto w = watch({"--accel", "none", "-j", "1"});
   ASSERT_TRUE(w->serving());
-  const auto refining = w->wait_until([](const auto& s) { return s.json.find("\"phase\": \"first pass\"") != std::string::npos; },
+  const auto refining = w->wait_until([](const auto& s) { return s.frame(1)["phase"] == "first pass"; },
                                       test::kPatience);
   ASSERT_TRUE(refining) << w->process().log();
   EXPECT_GT(refining->version(1), 0u);  // the coarse image is there
@@ -335,7 +340,7 @@ TEST_F(GoldenWatch, TheShowcaseShowsACoarseImageLongBeforeItsRenderEnds) {
   const auto shown = w->wait_until([](const auto& s) { return s.version(1) > 0; }, test::kPatience);
   ASSERT_TRUE(shown) << w->process().log();
   EXPECT_EQ(shown->state, "rendering");
-  EXPECT_EQ(shown->json.find("\"phase\": \"done\""), std::string::npos);
+  EXPECT_NE(shown->frame(1)["phase"], "done");
   const Image first = decoded(w->frame_png(1));
   EXPECT_EQ(first.width(), 640);
   EXPECT_EQ(first.height(), 360);

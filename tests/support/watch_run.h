@@ -3,6 +3,7 @@
 /// page, and its status read from /stats.json.
 
 #include <httplib.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <functional>
@@ -32,17 +33,22 @@ inline constexpr std::chrono::milliseconds kNewRenderBound{3000};
 inline constexpr std::chrono::milliseconds kNewRenderBound{1000};
 #endif
 
-/// The parts of /stats.json the tests look at.
+/// /stats.json as the page reads it, and the parts the tests look at most.
 struct WatchStatus {
-  std::string json;
+  std::string json;  ///< as served
+  nlohmann::json data;
   uint64_t render_id = 0;
   std::string state;  ///< loading | rendering | done | error
-  std::string error;  ///< as JSON escapes it
-  /// The image version of frame `number` (1-based); 0 when it has none.
+  std::string error;
+  /// Frame `number`'s entry (1-based); null when there is none.
+  nlohmann::json frame(int number) const {
+    const auto& frames = data["frames"];
+    return number >= 1 && size_t(number) <= frames.size() ? frames[size_t(number - 1)] : nlohmann::json();
+  }
+  /// The image version of frame `number`; 0 when it has none.
   uint64_t version(int number) const {
-    const std::regex frame("\"number\": " + std::to_string(number) + ", \"width\": \\d+, \"height\": \\d+, \"version\": (\\d+)");
-    std::smatch m;
-    return std::regex_search(json, m, frame) ? std::stoull(m[1].str()) : 0;
+    const nlohmann::json f = frame(number);
+    return f.is_null() ? 0 : f["version"].get<uint64_t>();
   }
 };
 
@@ -71,10 +77,10 @@ class WatchRun {
     if (!res || res->status != 200) return std::nullopt;
     WatchStatus s;
     s.json = res->body;
-    std::smatch m;
-    if (std::regex_search(s.json, m, std::regex(R"("render_id": (\d+))"))) s.render_id = std::stoull(m[1].str());
-    if (std::regex_search(s.json, m, std::regex(R"re("state": "(\w+)")re"))) s.state = m[1].str();
-    if (std::regex_search(s.json, m, std::regex(R"re("error": "((?:[^"\\]|\\.)*)")re"))) s.error = m[1].str();
+    s.data = nlohmann::json::parse(s.json);
+    s.render_id = s.data["render_id"].get<uint64_t>();
+    s.state = s.data["state"].get<std::string>();
+    s.error = s.data["error"].get<std::string>();
     return s;
   }
 

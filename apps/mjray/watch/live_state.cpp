@@ -1,6 +1,5 @@
 #include "live_state.h"
 
-#include <cstdio>
 #include <filesystem>
 
 #include "mjray/io/png_codec.h"
@@ -82,7 +81,7 @@ void LiveState::finish_frame(size_t frame, const JobStatistics& statistics) {
   // a viewer's business (with --listen the viewer may be anyone).
   JobStatistics shown = statistics;
   shown.image = std::filesystem::path(shown.image).filename().string();
-  frames_[frame].statistics = statistics_json(shown);
+  frames_[frame].statistics = statistics_object(shown);
 }
 
 void LiveState::finish_render() {
@@ -97,22 +96,27 @@ uint64_t LiveState::render_id() const {
 
 std::string LiveState::status_json() const {
   std::lock_guard lock(mutex_);
-  std::string out = "{\"scene\": " + json_string(scene_name_) + ", \"render_id\": " + std::to_string(render_id_) +
-                    ", \"state\": " + json_string(state_) + ", \"error\": " + json_string(error_) +
-                    ", \"active_frame\": " + std::to_string(active_frame_ + 1) + ", \"frames\": [";
+  Json frames = Json::array();
   for (size_t i = 0; i < frames_.size(); ++i) {
     const Frame& f = frames_[i];
-    char numbers[320];
-    std::snprintf(numbers, sizeof numbers,
-                  "\"number\": %zu, \"width\": %d, \"height\": %d, \"version\": %llu, \"progress\": %.4f, "
-                  "\"eta_seconds\": %.1f, \"rays_per_second\": %.0f, \"antialias_pass\": %d",
-                  i + 1, f.description.width, f.description.height, (unsigned long long)f.version,
-                  f.progress.fraction, f.progress.eta_seconds, f.progress.rays_per_second, f.progress.antialias_pass);
-    out += std::string(i ? ", " : "") + "{\"image\": " + json_string(f.description.image) + ", " + numbers +
-           ", \"phase\": " + json_string(phase_name(f.progress.phase)) +
-           ", \"statistics\": " + (f.statistics.empty() ? "null" : f.statistics) + "}";
+    frames.push_back({{"image", f.description.image},
+                      {"number", i + 1},
+                      {"width", f.description.width},
+                      {"height", f.description.height},
+                      {"version", f.version},
+                      {"progress", f.progress.fraction},
+                      {"eta_seconds", f.progress.eta_seconds},
+                      {"rays_per_second", f.progress.rays_per_second},
+                      {"antialias_pass", f.progress.antialias_pass},
+                      {"phase", phase_name(f.progress.phase)},
+                      {"statistics", f.statistics}});
   }
-  return out + "]}";
+  return json_text({{"scene", scene_name_},
+                    {"render_id", render_id_},
+                    {"state", state_},
+                    {"error", error_},
+                    {"active_frame", active_frame_ + 1},
+                    {"frames", std::move(frames)}});
 }
 
 std::optional<std::string> LiveState::frame_png(size_t frame) const {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "job_statistics.h"
+#include "statistics_json.h"
 #include "mjray/core/image.h"
 #include "mjray/io/encode_options.h"
 
@@ -69,7 +69,7 @@ class LiveState {
     std::shared_ptr<const Image> image;
     uint64_t version = 0;               // 0: no image yet
     FrameProgress progress;
-    std::string statistics;             // JSON object; empty until finished
+    Json statistics;                    // an object once finished; null until then
     mutable std::shared_ptr<const std::string> png;  // encoded image of png_version
     mutable uint64_t png_version = 0;
   };

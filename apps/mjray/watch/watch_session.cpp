@@ -8,8 +8,10 @@
 #include "file_watcher.h"
 #include "interrupts.h"
 #include "job_statistics.h"
+#include "statistics_json.h"
 #include "live_state.h"
 #include "local_render.h"
+#include "mjray/core/seconds_since.h"
 #include "preview_server.h"
 #include "progressive_render.h"
 #include "mjray/core/error.h"
@@ -48,7 +50,7 @@ RoundEnd render_round(const RunOptions& options, LiveState& page, FileWatcher& f
   try {
     const auto start = std::chrono::steady_clock::now();
     const SceneDescription scene = load_interruptibly(options, read);
-    const double parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double parse_seconds = seconds_since(start);
     std::vector<std::filesystem::path> watched = {options.scene};
     watched.insert(watched.end(), scene.inputs.begin(), scene.inputs.end());
     files.watch(watched);

@@ -20,13 +20,22 @@ std::string accelerator_names() {
 }
 
 std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options) {
-  if (options.kind == "bvh") return std::make_unique<Bvh>(prims, options.threads);
-  if (options.kind == "none") return std::make_unique<BruteForce>(prims);
-  if (options.kind == "grid") return std::make_unique<UniformGrid>(prims, options.grid_size);
+  return build_accelerator(prims, options).structure;
+}
+
+AcceleratorBuild build_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options) {
+  if (options.kind == "bvh") return {std::make_unique<Bvh>(prims, options.threads), 0, ""};
+  if (options.kind == "none") return {std::make_unique<BruteForce>(prims), 0, ""};
+  if (options.kind == "grid") {
+    auto grid = std::make_unique<UniformGrid>(prims, options.grid_size);
+    const int resolution = grid->resolution();
+    std::string note = grid->resolution_note();
+    return {std::move(grid), resolution, std::move(note)};
+  }
   if (options.kind == "embree") {
 #ifdef MJRAY_HAVE_EMBREE
-    return std::make_unique<EmbreeAccelerator>(prims, options.threads, options.embree_exact_hits,
-                                               options.embree_robust);
+    return {std::make_unique<EmbreeAccelerator>(prims, options.threads, options.embree_exact_hits,
+                                                options.embree_robust), 0, ""};
 #else
     throw SceneError("accelerator 'embree' is not available: this mjray was built without Embree "
                      "(install libembree-dev and configure with -DMJRAY_WITH_EMBREE=ON)");

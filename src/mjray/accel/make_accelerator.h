@@ -25,4 +25,14 @@ std::string accelerator_names();
 /// unknown or unavailable kind.
 std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options);
 
+/// An accelerator as built for a render, with what its building decided that the user is told.
+struct AcceleratorBuild {
+  std::unique_ptr<Accelerator> structure;
+  int grid_resolution = 0;  ///< voxels per axis of a grid (0 for the others)
+  std::string note;         ///< e.g. why a grid is smaller than asked; empty when nothing to say
+};
+
+/// make_accelerator, with what the build decided.
+AcceleratorBuild build_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options);
+
 }  // namespace mjray

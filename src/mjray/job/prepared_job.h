@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
+#include "mjray/accel/make_accelerator.h"
 #include "mjray/camera/camera.h"
 #include "mjray/integrator/indirect_light.h"
 #include "mjray/integrator/integrator.h"
@@ -33,7 +34,9 @@ class PreparedJob {
   int height() const { return size_.height; }
   const std::filesystem::path& output() const { return output_; }
   const World& world() const { return world_; }
-  const Accelerator& accelerator() const { return *accel_; }
+  const Accelerator& accelerator() const { return *accel_.structure; }
+  /// Voxels per axis of --accel grid; 0 for other accelerators.
+  int grid_resolution() const { return accel_.grid_resolution; }
   const Camera& camera() const { return camera_; }
   const Integrator& integrator() const { return *integrator_; }
   /// flatten's warnings ("file:line: text"), then the accelerator's (a grid smaller than asked).
@@ -50,7 +53,7 @@ class PreparedJob {
   std::vector<std::string> warnings_;
   std::chrono::steady_clock::time_point build_start_ = std::chrono::steady_clock::now();
   World world_;
-  std::unique_ptr<Accelerator> accel_;
+  AcceleratorBuild accel_;
   Camera camera_;
   std::unique_ptr<PhotonMaps> photons_;
   std::unique_ptr<IndirectLight> indirect_;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "mjray/core/error.h"
+#include "mjray/core/seconds_since.h"
 #include "mjray/render/adaptive_antialiasing.h"
 #include "mjray/render/tile_render.h"
 
@@ -81,7 +82,7 @@ void ImageRender::resume_from(const RenderCheckpoint& c) {
 bool ImageRender::run() {
   const auto start = std::chrono::steady_clock::now();
   const bool finished = run_first_pass() && run_antialiasing();
-  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  seconds_ += seconds_since(start);
   return finished;
 }
 

@@ -8,6 +8,7 @@
 #include "mjray/core/available_memory.h"
 #include "mjray/core/error.h"
 #include "mjray/core/parallel_for.h"
+#include "mjray/core/seconds_since.h"
 #include "mjray/integrator/photon/photon_tracer.h"
 
 namespace mjray {
@@ -16,7 +17,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// The query of a map: its k, and its radius as a share of the diagonal of `box`.
 DensityQuery query_for(int neighbours, const Bounds3& box, float radius_share) {
