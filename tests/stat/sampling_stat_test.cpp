@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -85,6 +86,77 @@ TEST(StatBrdf, CosineHemisphereSamplesFollowCosTheta) {
     return normalize(axis * c2 + side * (std::sqrt(std::max(0.f, 1 - c2 * c2)) / side_length));
   };
   EXPECT_LT(cone_chi2(squared, axis, 0), kChi2Limit);
+}
+
+/// Pearson's χ² of LocalShading::sample against LocalShading::pdf over the hemisphere of n:
+/// 16 bins of cos θ × 16 of φ, each bin's expected count the pdf integrated over it (a 16 × 16
+/// midpoint rule inside the bin), 200,000 draws; draws below the surface count as none (the
+/// pdf leaves them out too). Bins expecting fewer than 5 draws are pooled.
+double phong_chi2(const LocalShading& shading, const ShadingFrame& frame) {
+  constexpr int kBins = 16, kSub = 16, kSamples = 200000;
+  constexpr float kTwoPi = 2 * std::numbers::pi_v<float>;
+  const Vector3 n(frame.n), t = normalize(cross(n, std::abs(n.x) < 0.9f ? Vector3(1, 0, 0) : Vector3(0, 1, 0)));
+  const Vector3 b = cross(n, t);
+  const auto direction = [&](float cos_theta, float phi) {
+    const float sin_theta = std::sqrt(std::max(0.f, 1 - cos_theta * cos_theta));
+    return t * (sin_theta * std::cos(phi)) + b * (sin_theta * std::sin(phi)) + n * cos_theta;
+  };
+  std::vector<double> observed(kBins * kBins, 0), expected(kBins * kBins, 0);
+  RandomStream random(11, 0, 0);
+  for (int i = 0; i < kSamples; ++i) {
+    const float u1 = random.uniform(), u2 = random.uniform();
+    const auto drawn = shading.sample(frame, u1, u2);
+    if (!drawn) continue;
+    const float c = dot(drawn->wi, n);
+    float phi = std::atan2(dot(drawn->wi, b), dot(drawn->wi, t));
+    if (phi < 0) phi += kTwoPi;
+    const int tb = std::clamp(int(c * kBins), 0, kBins - 1), pb = std::clamp(int(phi / kTwoPi * kBins), 0, kBins - 1);
+    ++observed[size_t(tb * kBins + pb)];
+  }
+  // dω = d(cos θ) dφ: each sub-cell has area (1/(kBins·kSub)) · (2π/(kBins·kSub)).
+  const double cell = (1.0 / (kBins * kSub)) * (kTwoPi / (kBins * kSub));
+  for (int tb = 0; tb < kBins; ++tb)
+    for (int pb = 0; pb < kBins; ++pb)
+      for (int i = 0; i < kSub; ++i)
+        for (int j = 0; j < kSub; ++j) {
+          const float c = (float(tb * kSub + i) + 0.5f) / (kBins * kSub);
+          const float phi = (float(pb * kSub + j) + 0.5f) / (kBins * kSub) * kTwoPi;
+          expected[size_t(tb * kBins + pb)] += kSamples * cell * shading.pdf(frame, direction(c, phi));
+        }
+  double chi2 = 0, pooled_observed = 0, pooled_expected = 0;
+  for (size_t k = 0; k < expected.size(); ++k) {
+    if (expected[k] < 5) {
+      pooled_observed += observed[k];
+      pooled_expected += expected[k];
+      continue;
+    }
+    chi2 += (observed[k] - expected[k]) * (observed[k] - expected[k]) / expected[k];
+  }
+  if (pooled_expected > 0) chi2 += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) / pooled_expected;
+  return chi2;
+}
+
+// At most 257 degrees of freedom: P(χ² > 340) < 0.001.
+constexpr double kPhongChi2Limit = 340;
+
+TEST(StatBrdf, PhongSamplesFollowTheirPdfForLobesAndMixtures) {
+  const Normal3 n(0, 0, 1);
+  struct Case {
+    const char* what;
+    LocalShading shading;
+    Vector3 wo;
+  };
+  const Case cases[] = {
+      {"a glossy lobe at normal incidence", {{0, 0, 0}, {0.8f, 0.8f, 0.8f}, 20}, {0, 0, 1}},
+      {"a sharp lobe seen at a slant, partly below the surface", {{0, 0, 0}, {0.5f, 0.6f, 0.7f}, 60},
+       normalize(Vector3(0.8f, 0, 0.35f))},
+      {"diffuse and glossy mixed", {{0.4f, 0.3f, 0.2f}, {0.3f, 0.3f, 0.3f}, 8}, normalize(Vector3(-0.3f, 0.5f, 0.8f))},
+      {"diffuse only", {{0.6f, 0.6f, 0.6f}, {0, 0, 0}, 1}, normalize(Vector3(0.2f, 0.1f, 0.9f))},
+  };
+  for (const Case& c : cases) {
+    const ShadingFrame frame{c.wo, n, n};
+    EXPECT_LT(phong_chi2(c.shading, frame), kPhongChi2Limit) << c.what;
+  }
 }
 
 /// The floor at P = (px, 0, 0) under a square light of half-size a at height H, half of it
