@@ -2,6 +2,9 @@
 
 #include "mjray/io/file_hash.h"
 
+#include <chrono>
+#include <optional>
+#include <thread>
 #include <gtest/gtest.h>
 
 #include "support/scratch_files.h"
@@ -68,16 +71,24 @@ TEST(BackgroundFileHashes, AFileChangedAfterItWasHashedIsLeftOutOrHashedAgain) {
 }
 
 TEST(BackgroundFileHashes, StopsWithoutWaitingForTheQueue) {
+  // Twenty sparse files of 256 MiB each: hashing them all takes many seconds (each is read
+  // through), so a destructor that waited for the queue, or for the file under way, would show.
   const auto dir = test::make_temp_dir("background-hash-stop");
-  test::write_file(dir / "big", std::string(size_t(4) << 20, 'x'));
-  {
-    BackgroundFileHashes hashes;
-    for (int i = 0; i < 1000; ++i) hashes.add(dir / "big");  // one file, queued once
-    for (int i = 0; i < 50; ++i) {
-      test::write_file(numbered(dir, i), "x");
-      hashes.add(numbered(dir, i));
-    }
-  }  // destroyed at once: the test ends rather than hangs
+  constexpr int kFiles = 20;
+  for (int i = 0; i < kFiles; ++i) {
+    test::write_file(numbered(dir, i), "x");
+    std::filesystem::resize_file(numbered(dir, i), uint64_t(256) << 20);
+  }
+  const auto timed_hash_start = std::chrono::steady_clock::now();
+  (void)file_hash(numbered(dir, 0));
+  const double one_file = std::chrono::duration<double>(std::chrono::steady_clock::now() - timed_hash_start).count();
+  std::optional<BackgroundFileHashes> hashes(std::in_place);
+  for (int i = 0; i < kFiles; ++i) hashes->add(numbered(dir, i));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the first file is under way
+  const auto start = std::chrono::steady_clock::now();
+  hashes.reset();
+  const double destroying = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(destroying, std::max(0.5, one_file / 4)) << "hashing one file takes " << one_file << " s";
   std::filesystem::remove_all(dir);
 }
 
