@@ -1,7 +1,8 @@
-// Every CS 488 corpus scene renders unchanged through the real program, into an image of the
-// size it asks for. What the images show is checked against references in
-// reference_images_test.cpp.
+// Every CS 488 corpus scene renders unchanged through the real program: into an image of the
+// size it asks for, and, at the size of its reference (reference_images_test.cpp), into the
+// reference's pixels.
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
@@ -11,6 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "mjray/io/image_reader.h"
+#include "support/corpus_scenes.h"
+#include "support/reference_image.h"
 #include "support/test_paths.h"
 
 namespace mjray {
@@ -62,6 +65,17 @@ TEST_P(CorpusRender, RendersUnchangedToTheSizeItAsksFor) {
   const Image image = read_image(out / scene.image);
   EXPECT_EQ(image.width(), scene.width);
   EXPECT_EQ(image.height(), scene.height);
+
+  // The pixels too: the program at the reference's size (the same camera) gives the image
+  // that the reference test's job library gave when the reference was made.
+  const double shrink = std::min(1.0, 128.0 / std::max(scene.width, scene.height));
+  const std::string size = std::to_string(std::max(1, int(scene.width * shrink))) + "x" +
+                           std::to_string(std::max(1, int(scene.height * shrink)));
+  const auto small = out / "small.png";
+  ASSERT_EQ(std::system(("'" + test::mjray_binary().native() + "' --quiet --size " + size + " --output '" + small.string() +
+                         "' '" + script.string() + "' 2> '" + log.string() + "'").c_str()),
+            0);
+  EXPECT_TRUE(test::matches_reference(read_image(small), "corpus/" + test::identifier(scene.path)));
   std::filesystem::remove_all(out);
 }
 
