@@ -3,13 +3,11 @@
 
 #include <cstddef>
 #include <optional>
-#include <span>
 #include <string_view>
 
 #include "mjray/core/bounds.h"
 #include "mjray/core/ray.h"
 #include "mjray/geometry/hit.h"
-#include "mjray/geometry/light_pyramid.h"
 
 namespace mjray {
 
@@ -46,15 +44,6 @@ class Accelerator {
   /// or one whose hit it says blocks. Without a blocker, every primitive the filter sees that
   /// the ray crosses has been shown to it.
   virtual bool occluded(const Ray& ray, Interval t_range, HitFilter& filter) const = 0;
-  /// The primitives other than `ignore` that may touch `region`, written to the front of
-  /// `out`: every shadow ray inside the region can hit only these (and `ignore`). None found
-  /// means every such ray reaches its light. Nothing when there are more than out.size(), or
-  /// when the search would cost more than it saves: the rays are then traced as usual.
-  virtual std::optional<size_t> region_primitives(const LightPyramid& region, uint32_t ignore,
-                                                  std::span<uint32_t> out) const {
-    (void)region, (void)ignore, (void)out;
-    return std::nullopt;
-  }
   /// Bounds of all primitives.
   virtual Bounds3 bounds() const = 0;
   /// The name users pass to --accel.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mjray/accel/accelerator.h"
+#include "mjray/accel/region_search.h"
 #include "mjray/core/large_pages.h"
 #include "mjray/geometry/primitive_set.h"
 
@@ -144,7 +145,7 @@ struct BvhTree {
 
 /// Binned-SAH BVH over all of a PrimitiveSet's primitives (triangles and shapes). Primitives
 /// whose bounds are not finite are left out: the intersection tests never hit them.
-class Bvh final : public Accelerator {
+class Bvh final : public Accelerator, public RegionSearch {
  public:
   /// Builds over `prims` (which must outlive the Bvh) with `threads` threads (0 = all cores).
   Bvh(const PrimitiveSet& prims, int threads, BvhSimd simd = BvhSimd::kBest);

@@ -24,18 +24,22 @@ std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const A
 }
 
 AcceleratorBuild build_accelerator(const PrimitiveSet& prims, const AcceleratorOptions& options) {
-  if (options.kind == "bvh") return {std::make_unique<Bvh>(prims, options.threads), 0, ""};
-  if (options.kind == "none") return {std::make_unique<BruteForce>(prims), 0, ""};
+  if (options.kind == "bvh") {
+    auto bvh = std::make_unique<Bvh>(prims, options.threads);
+    const RegionSearch* regions = bvh.get();
+    return {std::move(bvh), regions, 0, ""};
+  }
+  if (options.kind == "none") return {std::make_unique<BruteForce>(prims), nullptr, 0, ""};
   if (options.kind == "grid") {
     auto grid = std::make_unique<UniformGrid>(prims, options.grid_size);
     const int resolution = grid->resolution();
     std::string note = grid->resolution_note();
-    return {std::move(grid), resolution, std::move(note)};
+    return {std::move(grid), nullptr, resolution, std::move(note)};
   }
   if (options.kind == "embree") {
 #ifdef MJRAY_HAVE_EMBREE
     return {std::make_unique<EmbreeAccelerator>(prims, options.threads, options.embree_exact_hits,
-                                                options.embree_robust), 0, ""};
+                                                options.embree_robust), nullptr, 0, ""};
 #else
     throw SceneError("accelerator 'embree' is not available: this mjray was built without Embree "
                      "(install libembree-dev and configure with -DMJRAY_WITH_EMBREE=ON)");

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "mjray/accel/accelerator.h"
+#include "mjray/accel/region_search.h"
 #include "mjray/geometry/primitive_set.h"
 
 namespace mjray {
@@ -28,6 +29,8 @@ std::unique_ptr<Accelerator> make_accelerator(const PrimitiveSet& prims, const A
 /// An accelerator as built for a render, with what its building decided that the user is told.
 struct AcceleratorBuild {
   std::unique_ptr<Accelerator> structure;
+  /// The structure's region search, where it has one (the BVH's); null for the others.
+  const RegionSearch* regions = nullptr;
   int grid_resolution = 0;  ///< voxels per axis of a grid (0 for the others)
   std::string note;         ///< e.g. why a grid is smaller than asked; empty when nothing to say
 };

@@ -9,8 +9,8 @@
 
 namespace mjray {
 
-ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, const SurfaceInteraction& si,
-                         const Light& light, uint32_t likely_blocker)
+ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, const RegionSearch* regions,
+                         const SurfaceInteraction& si, const Light& light, uint32_t likely_blocker)
     : occluders_(&accel) {
   // The rays of every sample must leave from one origin: the light wholly on one side of the
   // surface, by a clear angle. On the outer side (where the geometric normal points) the
@@ -27,10 +27,11 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
   if (in_front != 0 && in_front != 4) return;
   // Every sample's direction has the corners' side, so offset_origin moves each the same way.
   origin_ = offset_origin(si, region[0] - si.point);
+  if (!regions) return;
   const auto pyramid = LightPyramid::make(*origin_, region);
   if (!pyramid) return;
   const uint32_t own = in_front == 4 ? si.prim : kNoPrimitive;
-  const auto found = accel.region_primitives(*pyramid, own, std::span(candidates_).first(kCapacity));
+  const auto found = regions->region_primitives(*pyramid, own, std::span(candidates_).first(kCapacity));
   if (!found) return;
   if (*found == 0) {
     clear_ = true;

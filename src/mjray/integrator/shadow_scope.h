@@ -10,6 +10,7 @@
 
 #include "mjray/accel/accelerator.h"
 #include "mjray/accel/primitive_list.h"
+#include "mjray/accel/region_search.h"
 #include "mjray/geometry/surface_interaction.h"
 #include "mjray/light/light.h"
 
@@ -26,10 +27,11 @@ class ShadowScope {
 
   /// Every primitive of `accel` (for one-sample lights, where a search would not pay).
   explicit ShadowScope(const Accelerator& accel) : occluders_(&accel) {}
-  /// The scope of the rays from `si` to `light`'s sample region. `likely_blocker`, if in the
-  /// list, is tested first.
-  ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, const SurfaceInteraction& si, const Light& light,
-              uint32_t likely_blocker);
+  /// The scope of the rays from `si` to `light`'s sample region, searched with `regions` when
+  /// the accelerator has a region search (else every ray traverses it). `likely_blocker`, if
+  /// in the list, is tested first.
+  ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, const RegionSearch* regions,
+              const SurfaceInteraction& si, const Light& light, uint32_t likely_blocker);
   ShadowScope(const ShadowScope&) = delete;
   ShadowScope& operator=(const ShadowScope&) = delete;
 
@@ -49,38 +51,6 @@ class ShadowScope {
   const Accelerator* occluders_;
   std::optional<Point3> origin_;
   bool clear_ = false;
-};
-
-/// A ShadowScope searched for only when a shadow ray first needs it: samples that the surface
-/// reflects none of trace no ray (a glass away from its narrow highlight, for most of an area
-/// light), so a shading point may need no search at all.
-class DeferredShadowScope {
- public:
-  /// Every primitive of `accel`, as ShadowScope(accel).
-  explicit DeferredShadowScope(const Accelerator& accel) : accel_(accel) {}
-  /// The scope ShadowScope(prims, accel, si, light, *likely_blocker) would be, with the
-  /// blocker read when it is searched for (none when `likely_blocker` is null).
-  DeferredShadowScope(const PrimitiveSet& prims, const Accelerator& accel, const SurfaceInteraction& si,
-                      const Light& light, const uint32_t* likely_blocker)
-      : accel_(accel), prims_(&prims), si_(&si), light_(&light), likely_blocker_(likely_blocker) {}
-
-  const ShadowScope& get() {
-    if (!scope_) {
-      if (prims_)
-        scope_.emplace(*prims_, accel_, *si_, *light_, likely_blocker_ ? *likely_blocker_ : ShadowScope::kNoPrimitive);
-      else
-        scope_.emplace(accel_);
-    }
-    return *scope_;
-  }
-
- private:
-  const Accelerator& accel_;
-  const PrimitiveSet* prims_ = nullptr;  // null: the whole accelerator
-  const SurfaceInteraction* si_ = nullptr;
-  const Light* light_ = nullptr;
-  const uint32_t* likely_blocker_ = nullptr;
-  std::optional<ShadowScope> scope_;
 };
 
 }  // namespace mjray

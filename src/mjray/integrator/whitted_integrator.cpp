@@ -6,7 +6,7 @@
 #include "mjray/geometry/spawn_ray.h"
 #include "mjray/integrator/closest_surface.h"
 #include "mjray/integrator/shadow_transmittance.h"
-#include "mjray/integrator/unreflected_light.h"
+#include "mjray/integrator/reflection_bound.h"
 
 namespace mjray {
 
@@ -19,10 +19,10 @@ constexpr uint64_t kDrawsPerLightSample = 2;
 
 Color WhittedIntegrator::radiance(const Ray& ray, RandomStream& random, TraceState& state) const {
   ++state.rays.primary;
-  return trace(ray, Depth{}, random, state);
+  return trace(ray, RayPath{}, random, state);
 }
 
-Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random,
+Color WhittedIntegrator::trace(const Ray& ray, RayPath path, RandomStream& random,
                                TraceState& state) const {
   const auto found = closest_surface(world_, accel_, ray);
   if (!found) return world_.background_radiance(ray.direction);
@@ -35,8 +35,8 @@ Color WhittedIntegrator::trace(const Ray& ray, Depth depth, RandomStream& random
   const LocalShading local = local_shading(material, si);
   // The specular lobes draw their samples first, then direct light: the order is part of
   // the image.
-  const Color specular = specular_light(si, frame, specular_lobes(material, frame), depth, random, state);
-  return surface_light(si, frame, local, depth.weight, random, state) + specular;
+  const Color specular = specular_light(si, frame, specular_lobes(material, frame), path, random, state);
+  return surface_light(si, frame, local, path.weight, random, state) + specular;
 }
 
 Color WhittedIntegrator::surface_light(const SurfaceInteraction& si, const ShadingFrame& frame,
@@ -55,21 +55,18 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
     // Compute the mean over the light's N×N jittered grid (its centre when N = 1, which
     // gives an area light the hard shadow of a point light there).
     const int n = std::max(1, samples_per_axis(light, settings_.area_light_samples));
-    if (reflects_none_of(local, frame, si.point, light)) {
+    if (!may_reflect(local, frame, si.point, light)) {
       // Its samples would add exactly zero (+0, which also turns a −0 ambient into +0); their
       // jitter is passed over so that later draws stay the same.
       result += Color{};
       if (n > 1) random.skip(kDrawsPerLightSample * uint64_t(n * n));
       continue;
     }
+    LightVisibility visibility(world_, shadow_queries_, si, light, index, n > 1, settings_.transmissive_shadows, state);
     if (n == 1) {
-      DeferredShadowScope scope(accel_);
-      result += light_sample(si, frame, local, sample_li(light, si.point, {0.5f, 0.5f}), index, state, scope);
+      result += light_sample(frame, local, sample_li(light, si.point, {0.5f, 0.5f}), si.point, visibility);
       continue;
     }
-    // Found once for all n×n samples (when one first needs a shadow ray): what their shadow
-    // rays can hit, if anything.
-    DeferredShadowScope scope(world_.primitives, accel_, si, light, state.occluders.slot(index));
     Color sum;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
@@ -77,80 +74,57 @@ Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const Shadin
         const float jitter_s = random.uniform();
         const float jitter_t = random.uniform();
         const Point2 u{(float(i) + jitter_s) / float(n), (float(j) + jitter_t) / float(n)};
-        sum += light_sample(si, frame, local, sample_li(light, si.point, u), index, state, scope);
+        sum += light_sample(frame, local, sample_li(light, si.point, u), si.point, visibility);
       }
     result += sum / float(n * n);
   }
   return result;
 }
 
-Color WhittedIntegrator::light_sample(const SurfaceInteraction& si, const ShadingFrame& frame,
-                                      const LocalShading& local, const LightSample& sample,
-                                      size_t light_index, TraceState& state, DeferredShadowScope& deferred) const {
-  const Vector3 to_light = sample.position - si.point;
-  const float distance = sample.distance;  // length(to_light), found by the light
+Color WhittedIntegrator::light_sample(const ShadingFrame& frame, const LocalShading& local, const LightSample& sample,
+                                      const Point3& point, LightVisibility& visibility) const {
+  const float distance = sample.distance;  // length(sample.position - point), found by the light
   if (!(distance > 0)) return {};
-  const Vector3 l = to_light / distance;
+  const Vector3 l = (sample.position - point) / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
   // What the surface would not reflect needs no shadow ray: without a diffuse part, a
   // glass's narrow highlight is exactly zero (the power underflows) for most of an area
-  // light's samples. Elsewhere the term is computed only for samples that reach the light.
-  const auto unshadowed = [&] { return local.phong(frame, l, n_dot_l) * sample.intensity; };
-  if (local.kd.is_black() && unshadowed().is_black()) return {};
-  const ShadowScope& scope = deferred.get();
-  if (scope.clear()) return unshadowed();
-  ++state.rays.shadow;
-  // spawn_ray_to's ray, its origin found once for all of the light's samples where it can be.
-  const Point3* origin = scope.shared_origin();
-  const Ray shadow = origin ? ray_to(*origin, sample.position) : spawn_ray_to(si, sample.position);
-  // The primitive that blocked the last shadow ray toward this light mostly blocks this one
-  // (a scope's list already holds it first).
-  uint32_t* cached = state.occluders.slot(light_index);
-  if (cached && *cached != OccluderCache::kNone && scope.whole_scene() &&
-      world_.primitives.intersect(*cached, shadow, {0, kShadowTMax}))
-    return {};
-  const Accelerator& occluders = scope.occluders();
-  // With a caustic photon map glass shadows like any object: the map brings its light.
-  if (!settings_.transmissive_shadows && world_.primitives.any_transmissive()) {
-    if (occluders.occluded(shadow, kShadowTMax)) return {};
-    return unshadowed();
-  }
-  // Through glass: what the transmissive surfaces on the way let pass.
-  const ShadowResult through = shadow_ray_transmittance(world_, occluders, shadow, kShadowTMax);
-  if (through.blocker && cached) *cached = *through.blocker;
-  if (through.kept.is_black()) return {};
-  if (!world_.primitives.any_transmissive()) return unshadowed();
-  return unshadowed() * through.kept;
+  // light's samples. Elsewhere the term is computed only for samples that arrive.
+  const auto reflected = [&] { return local.phong(frame, l, n_dot_l) * sample.intensity; };
+  if (local.kd.is_black() && reflected().is_black()) return {};
+  const Color arriving = visibility.transmittance(sample.position);
+  if (arriving.is_black()) return {};
+  return reflected() * arriving;
 }
 
 Color WhittedIntegrator::trace_secondary(const SurfaceInteraction& si, const Vector3& direction,
-                                         Depth depth, RandomStream& random,
+                                         RayPath path, RandomStream& random,
                                          TraceState& state) const {
   // Adaptive depth control: a ray whose colour would change the pixel by less than half an
   // 8-bit step is not worth tracing. Without it, glass that both reflects and refracts at
   // every hit grows a binary tree of 2^(r+f) rays.
   constexpr float kMinWeight = 0.5f / 255;
-  if (depth.weight < kMinWeight) return {};
+  if (path.weight < kMinWeight) return {};
   ++state.rays.secondary;
-  return trace(spawn_ray(si, direction), depth, random, state);
+  return trace(spawn_ray(si, direction), path, random, state);
 }
 
 Color WhittedIntegrator::specular_light(const SurfaceInteraction& si, const ShadingFrame& frame,
-                                        const SpecularLobes& lobes, Depth depth, RandomStream& random,
+                                        const SpecularLobes& lobes, RayPath path, RandomStream& random,
                                         TraceState& state) const {
   Color result;
   for (const SpecularLobe& lobe : lobes) {
-    const Depth next = depth.after(lobe.kind, lobe.weight);
+    const RayPath next = path.after(lobe.kind, lobe.weight);
     // Past the depth limit a lobe still shows what lies along it, never black; a limit of 0
     // turns that kind of lobe off.
-    if (!within_depth(lobe.kind, depth)) {
+    if (!within_depth(lobe.kind, path)) {
       if (depth_limit(lobe.kind) > 0)
         result += lobe.weight * terminal_light(si, lobe.direction, next.weight, random, state);
       continue;
     }
     // A glossy lobe blurs only the first reflection (as the original): deeper ones are mirrors.
-    if (lobe.cos_cone < 1 && depth.reflection == 0)
+    if (lobe.cos_cone < 1 && path.reflections == 0)
       result += glossy_light(si, frame, lobe, next, random, state);
     else
       result += lobe.weight * trace_secondary(si, lobe.direction, next, random, state);
@@ -182,7 +156,7 @@ Color WhittedIntegrator::terminal_light(const SurfaceInteraction& origin, const 
 }
 
 Color WhittedIntegrator::glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame,
-                                      const SpecularLobe& lobe, Depth next, RandomStream& random,
+                                      const SpecularLobe& lobe, RayPath next, RandomStream& random,
                                       TraceState& state) const {
   Color sum;
   const int samples = lobe.samples;

@@ -4,7 +4,7 @@
 #include "mjray/accel/accelerator.h"
 #include "mjray/integrator/indirect_light.h"
 #include "mjray/integrator/integrator.h"
-#include "mjray/integrator/shadow_scope.h"
+#include "mjray/integrator/light_visibility.h"
 #include "mjray/material/shading.h"
 #include "mjray/scene/world.h"
 
@@ -28,27 +28,29 @@ struct IntegratorSettings {
 /// An IndirectLight, when given, adds its light at every surface shaded.
 class WhittedIntegrator final : public Integrator {
  public:
+  /// `regions`, the accelerator's region search where it has one, lets an area light's shadow
+  /// rays test only what can stand in their way.
   WhittedIntegrator(const World& world, const Accelerator& accel, IntegratorSettings settings,
-                    const IndirectLight* indirect = nullptr)
-      : world_(world), accel_(accel), settings_(settings), indirect_(indirect) {}
+                    const IndirectLight* indirect = nullptr, const RegionSearch* regions = nullptr)
+      : world_(world), accel_(accel), shadow_queries_{accel, regions}, settings_(settings), indirect_(indirect) {}
 
   Color radiance(const Ray& ray, RandomStream& random, TraceState& state) const override;
 
  private:
-  /// Where a ray is in the recursion: bounces of each kind so far, and the weight its
-  /// colour will have in the pixel (the product of the lobe weights along the way).
-  struct Depth {
-    int reflection = 0;
-    int refraction = 0;
+  /// The path a ray ends: its bounces of each kind so far (for the -r and -f limits), and the
+  /// weight its colour will have in the pixel (the product of the lobe weights along it).
+  struct RayPath {
+    int reflections = 0;
+    int refractions = 0;
     float weight = 1;
 
-    Depth after(LobeKind kind, float factor) const {
-      return kind == LobeKind::kReflection ? Depth{reflection + 1, refraction, weight * factor}
-                                           : Depth{reflection, refraction + 1, weight * factor};
+    RayPath after(LobeKind kind, float factor) const {
+      return kind == LobeKind::kReflection ? RayPath{reflections + 1, refractions, weight * factor}
+                                           : RayPath{reflections, refractions + 1, weight * factor};
     }
   };
 
-  Color trace(const Ray& ray, Depth depth, RandomStream& random, TraceState& state) const;
+  Color trace(const Ray& ray, RayPath path, RandomStream& random, TraceState& state) const;
   /// ambient⊙kd + Σ lights (kd·max(0,n·l) + ks·max(0,r·v)^shininess)·I·att, with shadows.
   Color direct_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                      RandomStream& random, TraceState& state) const;
@@ -56,35 +58,35 @@ class WhittedIntegrator final : public Integrator {
   /// its pixel.
   Color surface_light(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
                       float weight, RandomStream& random, TraceState& state) const;
-  /// The Phong reflection of one light sample, or black when it is behind the surface or
-  /// in shadow; its shadow ray, traced only where the surface reflects some of the sample,
-  /// can hit only what `deferred` holds.
-  Color light_sample(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                     const LightSample& sample, size_t light_index, TraceState& state,
-                     DeferredShadowScope& deferred) const;
+  /// The Phong reflection of one light sample, times the share of it that `visibility` says
+  /// arrives; black when the light is behind the surface. Asks for visibility only where the
+  /// surface reflects some of the sample.
+  Color light_sample(const ShadingFrame& frame, const LocalShading& local, const LightSample& sample,
+                     const Point3& point, LightVisibility& visibility) const;
   /// Light arriving along the material's specular lobes, within the depth limits.
   Color specular_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobes& lobes,
-                       Depth depth, RandomStream& random, TraceState& state) const;
+                       RayPath path, RandomStream& random, TraceState& state) const;
   /// The mean of a glossy lobe's rays over its cone.
   Color glossy_light(const SurfaceInteraction& si, const ShadingFrame& frame, const SpecularLobe& lobe,
-                     Depth next, RandomStream& random, TraceState& state) const;
+                     RayPath next, RandomStream& random, TraceState& state) const;
   /// What a lobe past the -r/-f limit brings: the ray goes on straight through transmissive
   /// surfaces (keeping their shadow transmittance) to the first opaque one, and returns its
   /// local shading (ambient and direct light, no further lobes), or the background.
   Color terminal_light(const SurfaceInteraction& si, const Vector3& direction, float weight, RandomStream& random,
                        TraceState& state) const;
   /// The light arriving along a secondary ray leaving si.
-  Color trace_secondary(const SurfaceInteraction& si, const Vector3& direction, Depth depth,
+  Color trace_secondary(const SurfaceInteraction& si, const Vector3& direction, RayPath path,
                         RandomStream& random, TraceState& state) const;
   int depth_limit(LobeKind kind) const {
     return kind == LobeKind::kReflection ? settings_.max_reflection_depth : settings_.max_refraction_depth;
   }
-  bool within_depth(LobeKind kind, const Depth& depth) const {
-    return (kind == LobeKind::kReflection ? depth.reflection : depth.refraction) < depth_limit(kind);
+  bool within_depth(LobeKind kind, const RayPath& path) const {
+    return (kind == LobeKind::kReflection ? path.reflections : path.refractions) < depth_limit(kind);
   }
 
   const World& world_;
   const Accelerator& accel_;
+  ShadowQueries shadow_queries_;
   IntegratorSettings settings_;
   const IndirectLight* indirect_;
 };

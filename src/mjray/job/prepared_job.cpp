@@ -30,7 +30,7 @@ PreparedJob::PreparedJob(const SceneDescription& scene, size_t index, const JobO
   // ambient term stands for.
   if (photons.caustics()) settings.transmissive_shadows = false;
   if (photons.global_illumination()) world_.ambient = {};
-  integrator_ = std::make_unique<WhittedIntegrator>(world_, *accel_.structure, settings, indirect_.get());
+  integrator_ = std::make_unique<WhittedIntegrator>(world_, *accel_.structure, settings, indirect_.get(), accel_.regions);
 }
 
 }  // namespace mjray

@@ -13,7 +13,7 @@
 #include "mjray/geometry/triangle_mesh.h"
 #include "mjray/light/light.h"
 #include "mjray/material/material.h"
-#include "mjray/scene/scene_description.h"
+#include "mjray/scene/background.h"
 
 namespace mjray {
 

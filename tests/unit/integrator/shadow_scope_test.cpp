@@ -35,7 +35,7 @@ TEST(ShadowScope, TheSharedOriginIsSpawnRayTosForEverySample) {
     if (trial % 3 == 0) to_light = to_light - Vector3(n) * (dot(n, to_light) * (1 - 0.05f * uniform(rng)));
     const Vector3 e1 = test::random_unit_vector(rng) * (0.05f + uniform(rng)), e2 = test::random_unit_vector(rng) * (0.05f + uniform(rng));
     const Light light = AreaLight{si.point + to_light - e1 * 0.5f - e2 * 0.5f, e1, e2, {1, 1, 1}, {1, 0, 0}};
-    const ShadowScope scope(prims, bvh, si, light, ShadowScope::kNoPrimitive);
+    const ShadowScope scope(prims, bvh, &bvh, si, light, ShadowScope::kNoPrimitive);
     const Point3* origin = scope.shared_origin();
     if (!origin) {
       ++straddling;

@@ -1,4 +1,4 @@
-#include "mjray/integrator/unreflected_light.h"
+#include "mjray/integrator/reflection_bound.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,11 +21,11 @@ bool intensity_is_finite(const Light& light) {
 
 }  // namespace
 
-bool highlight_misses(const LocalShading& local, const ShadingFrame& frame, const Point3& point, const Light& light) {
-  if (!intensity_is_finite(light)) return false;
-  if (local.ks.is_black()) return true;
+bool highlight_may_reach(const LocalShading& local, const ShadingFrame& frame, const Point3& point, const Light& light) {
+  if (!intensity_is_finite(light)) return true;
+  if (local.ks.is_black()) return false;
   const Color& ks = local.ks;
-  if (!(local.shininess > 0) || !std::isfinite(ks.r) || !std::isfinite(ks.g) || !std::isfinite(ks.b)) return false;
+  if (!(local.shininess > 0) || !std::isfinite(ks.r) || !std::isfinite(ks.g) || !std::isfinite(ks.b)) return true;
   // r·v = l·m for the mirror m of v about n: every direction l toward the light must make
   // r·v so small that its power rounds to zero. The directions lie within the cone around
   // the region's centre that holds its circumscribed sphere.
@@ -43,7 +43,7 @@ bool highlight_misses(const LocalShading& local, const ShadingFrame& frame, cons
     axis[a] = centre[a] - double(point[a]);
     distance2 += axis[a] * axis[a];
   }
-  if (!(distance2 > 4 * radius2) || !(distance2 > 0)) return false;  // too close for a narrow cone
+  if (!(distance2 > 4 * radius2) || !(distance2 > 0)) return true;  // too close for a narrow cone
   const double distance = std::sqrt(distance2);
   const double n_dot_v = double(dot(frame.n, frame.wo));
   double mirror[3], mirror_length2 = 0, along_axis = 0;
@@ -53,7 +53,7 @@ bool highlight_misses(const LocalShading& local, const ShadingFrame& frame, cons
     along_axis += mirror[a] * axis[a];
   }
   const double mirror_length = std::sqrt(mirror_length2);
-  if (!(mirror_length > 0)) return false;
+  if (!(mirror_length > 0)) return true;
   // The cone's half-angle, widened by a milliradian for the rounding of the float directions
   // and dot products.
   constexpr double kMargin = 1e-3;
@@ -61,14 +61,14 @@ bool highlight_misses(const LocalShading& local, const ShadingFrame& frame, cons
   const double cos_wide = cos_half * std::cos(kMargin) - sin_half * std::sin(kMargin);
   const double sin_wide = sin_half * std::cos(kMargin) + cos_half * std::sin(kMargin);
   const double cos_to_mirror = std::clamp(along_axis / (mirror_length * distance), -1.0, 1.0);
-  if (cos_to_mirror >= cos_wide) return false;  // the mirror direction lies in the cone
+  if (cos_to_mirror >= cos_wide) return true;  // the mirror direction lies in the cone
   const double sin_to_mirror = std::sqrt(1 - cos_to_mirror * cos_to_mirror);
   // The largest l·m, plus room for the float r·v's rounding error: |m| times the cosine of
   // the angle between m and the cone's rim.
   const double largest = mirror_length * (cos_to_mirror * cos_wide + sin_to_mirror * sin_wide) + 1e-5;
-  // r·v ≤ 0 everywhere, or largest^shininess < 2^-200, far under the smallest float
-  // (2^-149): the power rounds to zero.
-  return largest <= 0 || double(local.shininess) * std::log2(largest) < -200;
+  // Unless r·v ≤ 0 everywhere, or largest^shininess < 2^-200, far under the smallest float
+  // (2^-149), where the power rounds to zero.
+  return !(largest <= 0 || double(local.shininess) * std::log2(largest) < -200);
 }
 
 }  // namespace mjray
