@@ -18,8 +18,9 @@ namespace {
 /// Seconds a worker waits for its threads' results before looking for messages again.
 constexpr double kLookInterval = 0.0002;
 
-/// What a worker does next after a job: carry on, or end the process.
-using Next = std::optional<int>;
+/// How a job leaves the worker: set, the exit code the process ends with; unset, it carries on
+/// with the next message.
+using ExitCode = std::optional<int>;
 
 /// After a failure has been reported: wait for rank 0 to end the run.
 int wait_for_finish(MpiWorld& world) {
@@ -28,7 +29,7 @@ int wait_for_finish(MpiWorld& world) {
 }
 
 /// A tile job: prepare it, say Ready, render the units as they come, report at its end.
-Next serve_tile_job(MpiWorld& world, const SceneDescription& scene, const JobOptions& options,
+ExitCode serve_tile_job(MpiWorld& world, const SceneDescription& scene, const JobOptions& options,
                     const TileJobMessage& request, const RankStatistics& rank) {
   const uint64_t bytes_before = world.bytes_sent();
   std::unique_ptr<PreparedJob> job;
@@ -72,7 +73,7 @@ Next serve_tile_job(MpiWorld& world, const SceneDescription& scene, const JobOpt
 }
 
 /// A frame job: render the whole job on this rank's threads, stopping when asked.
-Next render_frame_job(MpiWorld& world, const SceneDescription& scene, const JobOptions& options,
+ExitCode render_frame_job(MpiWorld& world, const SceneDescription& scene, const JobOptions& options,
                       const FrameJobMessage& request, const RankStatistics& rank) {
   std::optional<RenderCheckpoint> state;
   if (!request.state.empty()) state = decode_checkpoint(request.state, "the resume state sent by rank 0");
@@ -103,20 +104,20 @@ int run_worker(MpiWorld& world, const SceneDescription& scene, const JobOptions&
   while (true) {
     const auto message = world.wait(1.0);
     if (!message) continue;
-    Next next;
+    ExitCode exit_code;
     switch (type_of(message->bytes)) {
       case MessageType::kTileJob:
-        next = serve_tile_job(world, scene, options, decode_tile_job(message->bytes), rank);
+        exit_code = serve_tile_job(world, scene, options, decode_tile_job(message->bytes), rank);
         break;
       case MessageType::kFrameJob:
-        next = render_frame_job(world, scene, options, decode_frame_job(message->bytes), rank);
+        exit_code = render_frame_job(world, scene, options, decode_frame_job(message->bytes), rank);
         break;
       case MessageType::kFinish:
         return 0;
       default:
         break;  // left over from a job that ended early
     }
-    if (next) return *next;
+    if (exit_code) return *exit_code;
   }
 }
 

@@ -46,8 +46,8 @@ TEST_P(CorpusAccelerators, EveryAcceleratorGivesTheBruteForceImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, CorpusAccelerators, ::testing::ValuesIn(test::corpus_scenes()),
-                         [](const auto& info) {
-                           std::string name = info.param;
+                         [](const auto& test_info) {
+                           std::string name = test_info.param;
                            for (char& c : name)
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            return name;

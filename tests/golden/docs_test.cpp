@@ -73,8 +73,8 @@ TEST_P(DocumentationExample, RendersAsWritten) {
 
 TEST(Documentation, HasLuaExamples) { EXPECT_GE(all_examples().size(), 5u); }
 
-INSTANTIATE_TEST_SUITE_P(Golden, DocumentationExample, ::testing::ValuesIn(all_examples()), [](const auto& info) {
-  std::string name = info.param.document.stem().string() + "_line_" + std::to_string(info.param.line);
+INSTANTIATE_TEST_SUITE_P(Golden, DocumentationExample, ::testing::ValuesIn(all_examples()), [](const auto& test_info) {
+  std::string name = test_info.param.document.stem().string() + "_line_" + std::to_string(test_info.param.line);
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return name;

@@ -20,7 +20,7 @@ TEST_P(CorpusReference, MatchesItsReferenceImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Golden, CorpusReference, ::testing::ValuesIn(test::corpus_scenes()),
-                         [](const auto& info) { return test::identifier(info.param); });
+                         [](const auto& test_info) { return test::identifier(test_info.param); });
 
 class ShippedReference : public ::testing::TestWithParam<std::filesystem::path> {};
 
@@ -29,7 +29,7 @@ TEST_P(ShippedReference, MatchesItsReferenceImage) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Golden, ShippedReference, ::testing::ValuesIn(test::shipped_scenes()),
-                         [](const auto& info) { return info.param.stem().string(); });
+                         [](const auto& test_info) { return test_info.param.stem().string(); });
 
 }  // namespace
 }  // namespace mjray

@@ -39,7 +39,7 @@ TEST_P(ShippedScene, RendersEveryImageItAsksForAtItsSize) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Golden, ShippedScene, ::testing::ValuesIn(test::shipped_scenes()),
-                         [](const auto& info) { return info.param.stem().string(); });
+                         [](const auto& test_info) { return test_info.param.stem().string(); });
 
 }  // namespace
 }  // namespace mjray

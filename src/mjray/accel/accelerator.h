@@ -18,8 +18,8 @@ namespace mjray {
 /// primitive may be reported more than once.
 class HitFilter {
  public:
-  explicit HitFilter(bool sees_opaque = false, bool ignores_transmissive = false)
-      : sees_opaque(sees_opaque), ignores_transmissive(ignores_transmissive) {}
+  explicit HitFilter(bool sees_opaque_hits = false, bool ignores_transmissive_hits = false)
+      : sees_opaque(sees_opaque_hits), ignores_transmissive(ignores_transmissive_hits) {}
   virtual ~HitFilter() = default;
   /// True stops the query: the ray counts as occluded.
   virtual bool blocks(const Hit& hit) = 0;

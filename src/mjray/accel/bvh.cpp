@@ -25,6 +25,7 @@
 #endif
 
 #include "mjray/accel/bvh_builder.h"
+#include "mjray/accel/bvh_traversal.h"
 #include "mjray/core/error.h"
 #include "mjray/core/float_steps.h"
 #include "mjray/core/parallel_for.h"
@@ -34,33 +35,12 @@ namespace mjray {
 
 namespace {
 
-// The builder's binary depth stays under 64 and gathering wide nodes never deepens it; each wide
-// node leaves at most kBvhWidth − 1 entries on the stack (the any-hit traversal pushes all
-// kBvhWidth and pops one at once, so it peaks one above).
-constexpr int kStackSize = (kBvhWidth - 1) * 64 + 1;
-
-// Widens the far slab distance by 2γ₃ (pbrt-v4) so rounding never culls a box the ray
-// actually touches.
-constexpr float kGamma3 = 3 * std::numeric_limits<float>::epsilon() * 0.5f /
-                          (1 - 3 * std::numeric_limits<float>::epsilon() * 0.5f);
-constexpr float kFarScale = 1 + 2 * kGamma3;
+using namespace bvh_traversal;
 
 constexpr size_t round_up(size_t n, size_t multiple) { return (n + multiple - 1) / multiple * multiple; }
 
 bool is_valid_ray(const Ray& ray, Interval t_range) {
   return is_finite(ray.origin) && is_finite(ray.direction) && t_range.max > t_range.min;
-}
-
-/// A pending child: its word in the parent node (an inner node or a leaf, see BvhWideNode), and
-/// where the ray enters its box.
-struct StackEntry {
-  uint32_t child;
-  float t_enter;
-};
-
-/// The node at `place` of a layout. Its bytes hold a node written there by memcpy.
-const BvhWideNode& node_in(const std::byte* layout, uint32_t place) {
-  return *reinterpret_cast<const BvhWideNode*>(layout + size_t(place) * BvhLayout::kPlaceBytes);
 }
 
 /// The bytes a node takes in a layout, with its leaves' runs.
@@ -71,23 +51,8 @@ size_t bytes_with_runs(const BvhWideNode& node) {
   return bytes;
 }
 
-// A pushed child's node or run, and what follows it, is loaded ahead in trees of at least
-// kPrefetchFrom bytes: 768 bytes (the node and some 540 bytes of its runs, or a run and its
-// siblings), measured best among 256 to 768 on large meshes.
-constexpr size_t kPrefetchBytes = 12 * 64;
+// Trees of at least kPrefetchFrom bytes load a pushed child's memory ahead (kPrefetchBytes).
 constexpr size_t kPrefetchFrom = size_t(256) << 10;
-
-/// What traversal reads of a Bvh.
-struct TraversalView {
-  const std::byte* layout;  // BvhLayout
-  const PrimitiveSet* prims;
-  uint32_t triangle_count;
-  bool only_triangles;  // no shapes: a leaf's entries need no check of their kind
-  bool prefetches;      // the tree is large enough that its memory is worth loading ahead
-
-  const BvhWideNode& node(uint32_t place) const { return node_in(layout, place); }
-  LeafRun leaf(uint32_t word) const { return LeafRun::of(layout, word); }
-};
 
 namespace baseline {
 #define MJRAY_BVH_AVX 0

@@ -3,8 +3,10 @@
 // build (SSE2, or plain C++ elsewhere), and with MJRAY_BVH_AVX 1 under
 // `#pragma GCC target("avx")`, chosen at run time. The pragma adds no fused multiply-add,
 // so the inlined watertight test rounds exactly as World::intersect_primitive's does.
-// Expects from the including file: kFarScale, kStackSize, kPrefetchBytes, StackEntry,
-// TraversalView.
+// Reads only what mjray/accel/bvh_traversal.h declares (its namespace is opened here), which the
+// including file includes first.
+
+using namespace bvh_traversal;
 
 /// What the slab tests need of a ray, splatted across SIMD lanes once per ray.
 struct BoxRay {
@@ -225,8 +227,9 @@ struct NearestSearch {
   Hit* hit;
   bool found = false;
 
-  NearestSearch(const TraversalView& bvh, const Ray& ray, Interval t_range, Hit* hit)
-      : bvh(bvh), ray(ray), box_ray(ray, t_range), tri_ray(ray), t_min(t_range.min), t_max(t_range.max), hit(hit) {}
+  NearestSearch(const TraversalView& tree, const Ray& query, Interval t_range, Hit* result)
+      : bvh(tree), ray(query), box_ray(query, t_range), tri_ray(query), t_min(t_range.min), t_max(t_range.max),
+        hit(result) {}
 
   /// Once something is hit, a primitive at exactly the same t may still win: the lower
   /// primitive id does, as with every accelerator.

@@ -1,7 +1,7 @@
 #include "mjray/job/job_fingerprint.h"
 
 #include "mjray/io/file_hash.h"
-#include "mjray/job/job_view.h"
+#include "mjray/job/job_camera.h"
 #include "mjray/job/option_table.h"
 
 #include <charconv>

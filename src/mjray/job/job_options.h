@@ -22,8 +22,8 @@ struct OutputOptions {
   EncodeOptions encoding;
 };
 
-/// What the command line changes about every job's camera and image size.
-struct ViewOptions {
+/// What the command line sets over every job's camera and image size.
+struct ViewOverrides {
   std::optional<float> aperture_radius;  ///< --aperture: the thin lens's radius, over gr.lens's
   std::optional<float> focus_distance;   ///< --focus-distance: over gr.lens's
   std::optional<int> width, height;      ///< --size WxH: over gr.render's, same camera (vertical field kept)
@@ -43,7 +43,7 @@ struct JobOptions {
   PhotonSettings photons;  ///< --caustics, --gi
   RenderSettings render;  ///< with the --crop window (render.crop)
   OutputOptions outputs;
-  ViewOptions view;
+  ViewOverrides view;
   std::optional<FrameRange> frames;  ///< unset: every gr.render call
 };
 

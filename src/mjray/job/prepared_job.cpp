@@ -4,7 +4,7 @@
 #include "mjray/integrator/photon/photon_light.h"
 #include "mjray/integrator/whitted_integrator.h"
 #include "mjray/job/job_outputs.h"
-#include "mjray/job/job_view.h"
+#include "mjray/job/job_camera.h"
 #include "mjray/render/tile_render.h"
 #include "mjray/scene/flatten.h"
 

@@ -15,7 +15,7 @@
 #include "mjray/integrator/integrator.h"
 #include "mjray/integrator/photon/photon_maps.h"
 #include "mjray/job/job_options.h"
-#include "mjray/job/job_view.h"
+#include "mjray/job/job_camera.h"
 #include "mjray/scene/scene_description.h"
 #include "mjray/scene/world.h"
 

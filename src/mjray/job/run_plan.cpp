@@ -3,11 +3,28 @@
 #include "mjray/io/atomic_file.h"
 #include "mjray/io/video_encoder.h"
 #include "mjray/job/job_outputs.h"
-#include "mjray/job/job_view.h"
+#include "mjray/job/job_camera.h"
 
 namespace mjray {
 
 namespace {
+
+/// The indices of the jobs `frames` selects (all without it), in script order. Throws
+/// SceneError naming the script when the range starts or ends past the last gr.render call.
+std::vector<size_t> selected_jobs(const SceneDescription& scene, const std::optional<FrameRange>& frames) {
+  const int count = int(scene.jobs.size());
+  std::vector<size_t> jobs;
+  if (!frames) {
+    for (int i = 0; i < count; ++i) jobs.push_back(size_t(i));
+    return jobs;
+  }
+  const int last = frames->last.value_or(count);
+  if (frames->first > count || last > count)
+    throw SceneError(scene.script.string() + ": --frames " + std::to_string(frames->first) + "-" + std::to_string(last) +
+                     " asks for gr.render calls the scene does not make: it makes " + std::to_string(count));
+  for (int frame = frames->first; frame <= last; frame += frames->step) jobs.push_back(size_t(frame - 1));
+  return jobs;
+}
 
 /// --video: the frames' files share a format and a size, and ffmpeg can write the video.
 void check_video(const SceneDescription& scene, const std::vector<size_t>& jobs, const RunOptions& options) {
@@ -29,7 +46,7 @@ void check_video(const SceneDescription& scene, const std::vector<size_t>& jobs,
 
 RunPlan plan_run(const SceneDescription& scene, const RunOptions& options) {
   RunPlan plan{selected_jobs(scene, options.job.frames), JobFingerprints(scene, options.job), scene.warnings, scene.notes};
-  check_job_views(scene, plan.jobs, options.job);
+  check_job_cameras(scene, plan.jobs, options.job);
   for (std::string& w : check_outputs(scene, options.job.outputs, plan.jobs)) plan.warnings.push_back(std::move(w));
   if (options.report.video) check_video(scene, plan.jobs, options);
   if (const auto& json = options.report.stats_json) {

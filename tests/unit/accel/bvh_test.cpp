@@ -689,8 +689,8 @@ namespace {
 /// Records every hit it is shown and blocks none: with `sees_opaque`, every hit of the ray.
 class RecordingFilter final : public HitFilter {
  public:
-  explicit RecordingFilter(bool sees_opaque = false, bool ignores_transmissive = false)
-      : HitFilter(sees_opaque, ignores_transmissive) {}
+  explicit RecordingFilter(bool sees_opaque_hits = false, bool ignores_transmissive_hits = false)
+      : HitFilter(sees_opaque_hits, ignores_transmissive_hits) {}
   bool blocks(const Hit& hit) override {
     hits.push_back(hit);
     return false;

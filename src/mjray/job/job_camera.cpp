@@ -1,4 +1,4 @@
-#include "mjray/job/job_view.h"
+#include "mjray/job/job_camera.h"
 
 #include <cstdio>
 
@@ -22,34 +22,19 @@ std::string crop_text(const PixelRect& r) {
 
 }  // namespace
 
-ImageSize job_image_size(const RenderJob& job, const ViewOptions& view) {
+ImageSize job_image_size(const RenderJob& job, const ViewOverrides& view) {
   if (view.width && view.height) return {*view.width, *view.height};
   return {job.width, job.height};
 }
 
-CameraDescription job_camera(const RenderJob& job, const ViewOptions& view) {
+CameraDescription job_camera(const RenderJob& job, const ViewOverrides& view) {
   CameraDescription camera = job.camera;
   if (view.aperture_radius) camera.aperture_radius = *view.aperture_radius;
   if (view.focus_distance) camera.focus_distance = *view.focus_distance;
   return camera;
 }
 
-std::vector<size_t> selected_jobs(const SceneDescription& scene, const std::optional<FrameRange>& frames) {
-  const int count = int(scene.jobs.size());
-  std::vector<size_t> jobs;
-  if (!frames) {
-    for (int i = 0; i < count; ++i) jobs.push_back(size_t(i));
-    return jobs;
-  }
-  const int last = frames->last.value_or(count);
-  if (frames->first > count || last > count)
-    throw SceneError(scene.script.string() + ": --frames " + std::to_string(frames->first) + "-" + std::to_string(last) +
-                     " asks for gr.render calls the scene does not make: it makes " + std::to_string(count));
-  for (int frame = frames->first; frame <= last; frame += frames->step) jobs.push_back(size_t(frame - 1));
-  return jobs;
-}
-
-void check_job_views(const SceneDescription& scene, const std::vector<size_t>& jobs, const JobOptions& options) {
+void check_job_cameras(const SceneDescription& scene, const std::vector<size_t>& jobs, const JobOptions& options) {
   for (const size_t index : jobs) {
     const RenderJob& job = scene.jobs[index];
     const ImageSize size = job_image_size(job, options.view);
