@@ -142,11 +142,15 @@ CommandLine parse_command_line(const std::vector<std::string>& args, const std::
   return cl;
 }
 
-std::string usage_text(const std::vector<OptionSpec>& extra, const std::string& extra_heading) {
-  std::string text =
-      "usage: mjray [options] scene.lua\n\n"
-      "Renders the images a Lua scene script asks for with gr.render(...). Short options take their\n"
-      "value attached or apart and group as with getopt: -s4, -s 4, -og 5.\n\noptions:\n";
+std::string usage_text() {
+  return "usage: mjray [options] scene.lua\n\n"
+         "Renders the images a Lua scene script asks for with gr.render(...). Short options take their\n"
+         "value attached or apart and group as with getopt: -s4, -s 4, -og 5.\n\n" +
+         options_text();
+}
+
+std::string options_text(const std::vector<OptionSpec>& extra, const std::string& extra_heading) {
+  std::string text = "options:\n";
   for (const OptionSpec& spec : option_table()) text += usage_entry(spec);
   text += usage_entry({{"-h", "--help"}, "", "this text", nullptr});
   text += usage_entry({{"--version"}, "", "the version", nullptr});

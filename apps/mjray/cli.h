@@ -21,7 +21,11 @@ struct CommandLine {
 /// ends the options) over option_table() and a driver's `extra` options; throws UsageError.
 CommandLine parse_command_line(const std::vector<std::string>& args, const std::vector<OptionSpec>& extra = {});
 
-/// The --help text: every option of the table, then `extra` under `extra_heading`.
-std::string usage_text(const std::vector<OptionSpec>& extra = {}, const std::string& extra_heading = "");
+/// mjray's --help text: what it does, then options_text().
+std::string usage_text();
+
+/// The options part of --help: every option of the table, then a driver's `extra` options
+/// under `extra_heading`, then the exit codes.
+std::string options_text(const std::vector<OptionSpec>& extra = {}, const std::string& extra_heading = "");
 
 }  // namespace mjray

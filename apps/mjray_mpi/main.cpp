@@ -41,12 +41,13 @@ Renders what mjray renders, over the N ranks of an MPI job, to the same bytes. E
 the scene script and builds each scene it renders; rank 0 hands out the work, renders too, and
 writes every image, the resume state, the statistics and the video. Progress, warnings and
 errors come from rank 0 only. -j N is the threads of each rank (default: the host's cores
-shared among its ranks). --watch is mjray's alone.
+shared among its ranks). --watch is mjray's alone. Options take their value attached or
+apart and group as with getopt: -s4, -s 4, -og 5.
 
 mpirun's --quiet leaves out its own banners when a run fails or is interrupted; as root it
 needs --allow-run-as-root, and beyond the host's cores --oversubscribe.
 
-)" + usage_text(own, "mjray-mpi's own option");
+)" + options_text(own, "mjray-mpi's own option");
 }
 
 void print_error(const std::string& message) { std::fprintf(stderr, "mjray: error: %s\n", message.c_str()); }

@@ -104,14 +104,16 @@ std::pair<int, int> parse_size(const std::string& option, const std::string& tex
   const auto wh = parse_integers(text, 'x', 2, usage);
   if (wh[0] < 1 || wh[1] < 1 || wh[0] > kMaxImageSide || wh[1] > kMaxImageSide) throw UsageError(usage);
   if (uint64_t(wh[0] * wh[1]) > kMaxImagePixels)
-    throw UsageError(option + " " + text + " has more than 2^27 pixels (e.g. 16384x8192), the most mjray renders");
+    throw UsageError(option + " " + text + " has more than " + std::to_string(kMaxImagePixels) +
+                     " pixels (e.g. 16384x8192), the most mjray renders");
   return {int(wh[0]), int(wh[1])};
 }
 
 /// --crop X0,Y0,X1,Y1: the pixels [X0, X1) × [Y0, Y1), not empty.
 PixelRect parse_crop(const std::string& option, const std::string& text) {
-  const std::string usage = option + " expects X0,Y0,X1,Y1: the window [X0, X1) x [Y0, Y1) in pixels, "
-                            "0 <= X0 < X1 <= 65536 and 0 <= Y0 < Y1 <= 65536, got '" + text + "'";
+  const std::string side = std::to_string(kMaxImageSide);
+  const std::string usage = option + " expects X0,Y0,X1,Y1: the window [X0, X1) x [Y0, Y1) in pixels, 0 <= X0 < X1 <= " +
+                            side + " and 0 <= Y0 < Y1 <= " + side + ", got '" + text + "'";
   const auto v = parse_integers(text, ',', 4, usage);
   if (v[0] < 0 || v[1] < 0 || v[0] >= v[2] || v[1] >= v[3] || v[2] > kMaxImageSide || v[3] > kMaxImageSide)
     throw UsageError(usage);

@@ -77,7 +77,7 @@ TEST(CommandLine, MistakesSayWhatIsExpected) {
             "--size expects WIDTHxHEIGHT with whole numbers from 1 to 65536 (e.g. 640x360), got '640'");
   EXPECT_EQ(usage_error({"--size", "0x10"}).rfind("--size expects WIDTHxHEIGHT", 0), 0u);
   EXPECT_EQ(usage_error({"--size", "65536x65536"}),
-            "--size 65536x65536 has more than 2^27 pixels (e.g. 16384x8192), the most mjray renders");
+            "--size 65536x65536 has more than 134217728 pixels (e.g. 16384x8192), the most mjray renders");
   for (const char* crop : {"1,2,3", "5,0,5,10", "0,0,10,-1", "a,b,c,d", "0,0,70000,5"})
     EXPECT_EQ(usage_error({"--crop", crop}).rfind("--crop expects X0,Y0,X1,Y1", 0), 0u) << crop;
   EXPECT_EQ(usage_error({"--aa-method", "recursive"}), "--aa-method expects grid or subdivide, got 'recursive'");
