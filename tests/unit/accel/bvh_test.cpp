@@ -327,7 +327,7 @@ PrimitiveSet scattered_world(int triangles, uint32_t seed) {
 
 // The trees' surface-area cost (a node 2, a primitive 1) may fall as the builder improves, never
 // rise: a change that makes worse trees shows here before it shows in rays per second. The
-// bounds are the builder's costs when this test was written (docs/performance.md, "Trees").
+// bounds are the builder's costs when this test was written (bench/results/HISTORY.md, "Trees").
 TEST(BvhBuild, TreesCostNoMoreThanTheBinnedSahTreesOfRecord) {
   MJRAY_REQUIRE_SHARED(shared);
   for (const auto& [mesh, cost] : {std::pair{"small/teapot.obj", 18.6806}, std::pair{"small/bunny.obj", 23.9357}}) {
