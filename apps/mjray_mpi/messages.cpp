@@ -87,7 +87,7 @@ std::string encode(const TileJobMessage& m) { return start(MessageType::kTileJob
 std::string encode(const UnitsMessage& m) {
   ByteWriter w = start(MessageType::kUnits);
   w.put(m.phase).put(uint64_t(m.units.size()));
-  for (const WorkUnit& u : m.units) w.put(u.kind).put(u.id).put_vector(u.pixels);
+  for (const WorkUnit& u : m.units) w.put(u.kind).put(u.id).put_vector(u.pixels).put(u.pass);
   return w.take();
 }
 
@@ -135,6 +135,7 @@ UnitsMessage decode_units(const std::string& bytes) {
     u.kind = r.get<WorkUnit::Kind>();
     u.id = r.get<int32_t>();
     u.pixels = r.get_vector<int32_t>();
+    u.pass = r.get<PixelPass>();
     m.units.push_back(std::move(u));
   }
   return m;

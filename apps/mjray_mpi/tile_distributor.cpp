@@ -42,20 +42,21 @@ RayCounters TileDistributor::rays() const {
 bool TileDistributor::render_tiles(std::span<const int> tiles, Film& film, std::stop_token stop,
                                    const std::function<void(int)>& on_tile) {
   std::deque<WorkUnit> units;
-  for (const int tile : tiles) units.push_back({WorkUnit::Kind::kTile, tile, {}});
+  for (const int tile : tiles) units.push_back({WorkUnit::Kind::kTile, tile, {}, {}});
   return run(std::move(units), stop, [&](const ResultMessage& result) {
     store_tile(layout_, result.id, result.values, film);
     on_tile(result.id);
   });
 }
 
-bool TileDistributor::render_pixels(std::span<const int> pixels, std::stop_token stop,
-                                    const std::function<void(const SupersampledChunk&)>& on_chunk) {
+bool TileDistributor::render_pixels(std::span<const int> pixels, const PixelPass& pass, std::stop_token stop,
+                                    const std::function<void(const PixelChunk&)>& on_chunk) {
   // Pieces of TileRender's chunk size; a piece's id is its offset in `pixels`.
   std::deque<WorkUnit> units;
   for (size_t begin = 0; begin < pixels.size(); begin += TileRender::kChunk) {
     const size_t end = std::min(pixels.size(), begin + TileRender::kChunk);
-    units.push_back({WorkUnit::Kind::kPixels, int32_t(begin), std::vector<int32_t>(pixels.begin() + begin, pixels.begin() + end)});
+    units.push_back({WorkUnit::Kind::kPixels, int32_t(begin), std::vector<int32_t>(pixels.begin() + begin, pixels.begin() + end),
+                     pass});
   }
   return run(std::move(units), stop, [&](const ResultMessage& result) {
     if (size_t(result.id) + result.values.size() > pixels.size()) throw std::runtime_error("a rank returned pixels it was not given");

@@ -28,8 +28,8 @@ class TileDistributor final : public TileExecutor {
   int threads() const override;
   bool render_tiles(std::span<const int> tiles, Film& film, std::stop_token stop,
                     const std::function<void(int tile)>& on_tile) override;
-  bool render_pixels(std::span<const int> pixels, std::stop_token stop,
-                     const std::function<void(const SupersampledChunk&)>& on_chunk) override;
+  bool render_pixels(std::span<const int> pixels, const PixelPass& pass, std::stop_token stop,
+                     const std::function<void(const PixelChunk&)>& on_chunk) override;
   RayCounters rays() const override;
   uint64_t rays_published() const override { return published_rays_.load(std::memory_order_relaxed); }
 

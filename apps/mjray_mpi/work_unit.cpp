@@ -11,7 +11,8 @@ std::vector<FilmPixel> render_unit(const ImageSampler& sampler, const TileLayout
   std::vector<FilmPixel> values;
   if (unit.kind == WorkUnit::Kind::kPixels) {
     values.reserve(unit.pixels.size());
-    for (const int32_t p : unit.pixels) values.push_back(sampler.supersample(p % sampler.width(), p / sampler.width(), state));
+    for (const int32_t p : unit.pixels)
+      values.push_back(sampler.sample_pixel(p % sampler.width(), p / sampler.width(), unit.pass, state));
     return values;
   }
   // The first pass adds to the film, so the rectangle starts empty and is emptied again.

@@ -16,11 +16,12 @@ struct WorkUnit {
   Kind kind = Kind::kTile;
   int32_t id = 0;               ///< the tile, or the piece's offset in its pass's pixel list
   std::vector<int32_t> pixels;  ///< kPixels: row-major pixel indices
+  PixelPass pass;               ///< kPixels: what to compute for each
 };
 
 /// The film pixels of a rendered unit: a tile's rectangle row by row (rendered through
-/// `scratch`, a film of the image's size whose rectangle must be empty), or the
-/// supersampled estimate of each pixel in order.
+/// `scratch`, a film of the image's size whose rectangle must be empty), or what the unit's
+/// pass computes for each of its pixels in order.
 std::vector<FilmPixel> render_unit(const ImageSampler& sampler, const TileLayout& layout, const WorkUnit& unit,
                                    Film& scratch, TraceState& state);
 

@@ -23,6 +23,9 @@ struct Color {
 
   constexpr bool is_black() const { return r == 0 && g == 0 && b == 0; }
   constexpr float max_component() const { return std::max({r, g, b}); }
+  /// The mean of the three channels: how bright, with every channel counted alike (so that a
+  /// blue-only difference counts as much as a green one).
+  constexpr float average() const { return (r + g + b) * (1.f / 3); }
 };
 
 constexpr Color operator*(float s, const Color& c) { return c * s; }

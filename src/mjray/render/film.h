@@ -15,9 +15,25 @@ namespace mjray {
 struct FilmPixel {
   Color sum;         ///< Σ weight·radiance (linear)
   float weight = 0;  ///< Σ weight; 0 = nothing rendered yet
+  /// Σ weight·brightness² (Color::average), for the spread of the samples: the noise target's
+  /// error estimate.
+  float brightness_squares = 0;
 
   /// The pixel's colour: the weighted mean, black when empty.
   Color value() const { return weight > 0 ? sum / weight : Color{}; }
+  /// Adds one sample of `radiance` with `weight`.
+  void add(const Color& radiance, float sample_weight = 1) {
+    sum += radiance * sample_weight;
+    weight += sample_weight;
+    const float brightness = radiance.average();
+    brightness_squares += sample_weight * brightness * brightness;
+  }
+  /// Adds what another estimate of the same pixel gathered.
+  void merge(const FilmPixel& other) {
+    sum += other.sum;
+    weight += other.weight;
+    brightness_squares += other.brightness_squares;
+  }
   bool operator==(const FilmPixel&) const = default;
 };
 
@@ -32,11 +48,7 @@ class Film {
   FilmPixel& at(int x, int y) { return pixels_[index(x, y)]; }
   const FilmPixel& at(int x, int y) const { return pixels_[index(x, y)]; }
   /// Adds one sample of `radiance` with `weight` to pixel (x, y).
-  void add(int x, int y, const Color& radiance, float weight = 1) {
-    FilmPixel& p = at(x, y);
-    p.sum += radiance * weight;
-    p.weight += weight;
-  }
+  void add(int x, int y, const Color& radiance, float weight = 1) { at(x, y).add(radiance, weight); }
   const std::vector<FilmPixel>& pixels() const { return pixels_; }
   std::vector<FilmPixel>& pixels() { return pixels_; }
 

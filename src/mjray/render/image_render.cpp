@@ -7,6 +7,7 @@
 #include "mjray/core/error.h"
 #include "mjray/core/seconds_since.h"
 #include "mjray/render/adaptive_antialiasing.h"
+#include "mjray/render/noise_estimate.h"
 #include "mjray/render/tile_render.h"
 
 namespace mjray {
@@ -18,18 +19,38 @@ TileLayout layout_of(const PixelRect& region, int tile_size) {
 }
 
 /// Camera samples per pixel of the first pass and of an anti-aliasing estimate.
-uint64_t first_pass_samples(const SamplingSettings& s) { return uint64_t(std::max(1, s.samples_per_pixel)); }
+uint64_t first_pass_samples(const SamplingSettings& s) { return uint64_t(std::max(1, s.first_pass_samples())); }
 uint64_t antialias_samples(const SamplingSettings& s) {
-  return uint64_t(s.antialias_samples) * uint64_t(s.antialias_samples) * first_pass_samples(s);
+  return uint64_t(s.antialias_samples) * uint64_t(s.antialias_samples) * uint64_t(std::max(1, s.samples_per_pixel));
+}
+
+/// Passes after the first: -a's anti-aliasing passes, or the noise target's, each doubling the
+/// samples of the pixels it refines, up to --max-spp.
+int pixel_pass_count(const SamplingSettings& s) {
+  if (s.targets_noise()) {
+    int passes = 0;
+    for (uint64_t total = first_pass_samples(s); total < uint64_t(s.max_samples_per_pixel); total *= 2) ++passes;
+    return passes;
+  }
+  return s.antialias_samples > 0 && !s.subdivides() ? s.antialias_max_passes : 0;
+}
+
+/// What pass `k` (1-based) after the first computes for each pixel it takes.
+PixelPass pixel_pass(const SamplingSettings& s, int k) {
+  if (!s.targets_noise()) return {};
+  const uint64_t first = first_pass_samples(s) << (k - 1);
+  return {PixelPass::Kind::kMoreSamples, uint32_t(first),
+          uint32_t(std::min(first, uint64_t(s.max_samples_per_pixel) - first))};
 }
 
 }  // namespace
 
 PixelRect rendered_region(int width, int height, const RenderSettings& settings) {
   if (!settings.crop) return {0, 0, width, height};
-  // Subdivided pixels depend on nothing outside themselves.
-  const bool passes = settings.antialias_samples > 0 && !settings.subdivides();
-  const int margin = passes ? 2 * std::max(0, settings.antialias_max_passes) : 0;
+  // A pixel's plan for the next pass looks at its neighbours' neighbours (anti-aliasing) or its
+  // neighbours (the noise target); subdivided pixels depend on nothing outside themselves.
+  const int reach = settings.targets_noise() ? 1 : 2;
+  const int margin = reach * pixel_pass_count(settings);
   const PixelRect& c = *settings.crop;
   return {std::max(0, c.x0 - margin), std::max(0, c.y0 - margin), std::min(width, c.x1 + margin),
           std::min(height, c.y1 + margin)};
@@ -81,7 +102,7 @@ void ImageRender::resume_from(const RenderCheckpoint& c) {
 
 bool ImageRender::run() {
   const auto start = std::chrono::steady_clock::now();
-  const bool finished = run_first_pass() && run_antialiasing();
+  const bool finished = run_first_pass() && run_pixel_passes();
   seconds_ += seconds_since(start);
   return finished;
 }
@@ -103,20 +124,24 @@ bool ImageRender::run_first_pass() {
 
 bool ImageRender::plan_pass() {
   std::lock_guard lock(film_mutex_);  // checkpoint() may read the plan from another thread
-  const std::vector<int> pixels = next_supersample_set(film_.resolve(), settings_.antialias_threshold, supersampled_);
+  const std::vector<int> pixels =
+      settings_.targets_noise()
+          ? next_noise_set(film_, settings_.noise_threshold, float(settings_.max_samples_per_pixel))
+          : next_supersample_set(film_.resolve(), settings_.antialias_threshold, supersampled_);
   if (pixels.empty()) return false;
   pass_pixels_.assign(pixels.begin(), pixels.end());
   pass_done_.assign(pixels.size(), 0);
   return true;
 }
 
-bool ImageRender::run_antialiasing() {
-  if (settings_.antialias_samples <= 0 || settings_.subdivides()) return true;
-  const uint64_t samples_per_pixel = antialias_samples(settings_);
-  while (antialias_pass_ <= settings_.antialias_max_passes) {
+bool ImageRender::run_pixel_passes() {
+  const int passes = pixel_pass_count(settings_);
+  while (antialias_pass_ <= passes) {
     if (stop_.stop_requested()) return false;
     // Plan the pass from the image the last pass left (a resumed pass keeps its plan).
     if (pass_pixels_.empty() && !plan_pass()) break;
+    const PixelPass pass = pixel_pass(settings_, antialias_pass_);
+    const uint64_t samples_per_pixel = pass.kind == PixelPass::Kind::kSupersample ? antialias_samples(settings_) : pass.count;
     std::vector<int> pending;
     std::vector<size_t> plan_index;  // of each pending pixel in pass_pixels_
     for (size_t k = 0; k < pass_pixels_.size(); ++k) {
@@ -128,12 +153,14 @@ bool ImageRender::run_antialiasing() {
       plan_index.push_back(k);
     }
     total_ += pass_pixels_.size() * samples_per_pixel;
-    const bool finished = workers_->render_pixels(pending, stop_.get_token(), [&](const SupersampledChunk& chunk) {
+    const bool finished = workers_->render_pixels(pending, pass, stop_.get_token(), [&](const PixelChunk& chunk) {
       const size_t first = size_t(chunk.pixels.data() - pending.data());
       std::lock_guard lock(film_mutex_);
       for (size_t k = 0; k < chunk.pixels.size(); ++k) {
         const int p = chunk.pixels[k];
-        film_.at(p % film_.width(), p / film_.width()) = chunk.values[k];
+        FilmPixel& pixel = film_.at(p % film_.width(), p / film_.width());
+        if (pass.kind == PixelPass::Kind::kSupersample) pixel = chunk.values[k];
+        else pixel.merge(chunk.values[k]);
         pass_done_[plan_index[first + k]] = 1;
       }
       pixels_supersampled_ += chunk.pixels.size();
@@ -147,7 +174,7 @@ bool ImageRender::run_antialiasing() {
     ++antialias_passes_run_;
     ++antialias_pass_;
   }
-  antialias_pass_ = settings_.antialias_max_passes + 1;
+  antialias_pass_ = passes + 1;
   return true;
 }
 

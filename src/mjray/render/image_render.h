@@ -93,7 +93,8 @@ class ImageRender {
 
  private:
   bool run_first_pass();
-  bool run_antialiasing();
+  /// The passes over chosen pixels: -a's anti-aliasing, or the noise target's refinement.
+  bool run_pixel_passes();
   /// Chooses the pixels of the next anti-aliasing pass; false when there are none.
   bool plan_pass();
 

@@ -31,7 +31,7 @@ Color ImageSampler::trace(float sx, float sy, RandomStream& random, TraceState& 
 
 void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state) const {
   if (settings_.subdivides()) return first_pass_subdivided(rect, film, state);
-  const int n = settings_.samples_per_pixel;
+  const int n = settings_.first_pass_samples();
   const StratifiedGrid grid = stratified_grid(n);
   for (int y = rect.y0; y < rect.y1; ++y)
     for (int x = rect.x0; x < rect.x1; ++x) {
@@ -65,6 +65,20 @@ FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
       sum += trace(sx, sy, random, state);
     }
   return {sum, float(columns * rows)};
+}
+
+FilmPixel ImageSampler::more_samples(int x, int y, const PixelPass& pass, TraceState& state) const {
+  const StratifiedGrid grid = stratified_grid(int(pass.count));
+  const int ix = x + region_.x0, iy = y + region_.y0;
+  FilmPixel estimate;
+  for (uint32_t k = 0; k < pass.count; ++k) {
+    // Numbered on from the first pass's samples, so that each has a stream of its own.
+    RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(pass.first + k));
+    const float sx = float(ix) + (float(int(k) % grid.columns) + random.uniform()) / float(grid.columns);
+    const float sy = float(iy) + (float(int(k) / grid.columns) + random.uniform()) / float(grid.rows);
+    estimate.add(trace(sx, sy, random, state));
+  }
+  return estimate;
 }
 
 void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const {

@@ -2,6 +2,7 @@
 /// Where camera samples go in a pixel and which random stream each one draws from: the pure,
 /// single-threaded core of every render (drivers decide which pixels, on which thread or rank).
 
+#include <algorithm>
 #include <cstdint>
 
 #include "mjray/camera/camera.h"
@@ -27,9 +28,32 @@ struct SamplingSettings {
   /// --spp: stratified first-pass samples in every pixel (1 = the pixel centre). A bad pixel's
   /// anti-aliasing estimate then has -a² times as many: N×N cells of this many each.
   int samples_per_pixel = 1;
+  /// --noise-threshold: after the first pass, passes of more samples go to every pixel whose
+  /// estimated error relative to its brightness is still above this (noise_estimate.h); 0 = off.
+  float noise_threshold = 0;
+  /// --max-spp: the most samples a pixel gets from the noise target's passes.
+  int max_samples_per_pixel = 4096;
 
   /// Whether the first pass subdivides every pixel, leaving no anti-aliasing passes.
   bool subdivides() const { return antialias_samples > 0 && antialias_method == AntialiasMethod::kSubdivide; }
+  /// Whether passes refine the image to a noise target.
+  bool targets_noise() const { return noise_threshold > 0; }
+  /// The samples the first pass takes in every pixel: --spp, and at least kNoiseFirstSamples
+  /// under a noise target (its error estimate needs a spread to measure).
+  int first_pass_samples() const { return targets_noise() ? std::max(samples_per_pixel, kNoiseFirstSamples) : samples_per_pixel; }
+  static constexpr int kNoiseFirstSamples = 16;
+};
+
+/// What a pass over chosen pixels computes for each of them.
+struct PixelPass {
+  enum class Kind : uint8_t {
+    kSupersample,  ///< -a's estimate, which replaces the pixel's
+    kMoreSamples,  ///< samples first..first+count-1 of the pixel, added to its estimate
+  };
+  Kind kind = Kind::kSupersample;
+  uint32_t first = 0;
+  uint32_t count = 0;
+  bool operator==(const PixelPass&) const = default;
 };
 
 /// The random stream of a camera sample is keyed by (seed, pixel, sample index); draws within
@@ -76,10 +100,17 @@ class ImageSampler {
   /// (one through the centre when --spp is 1), added to `film`; with settings().subdivides(),
   /// each pixel's subdivided estimate instead.
   void first_pass(const PixelRect& rect, Film& film, TraceState& state) const;
+  /// What `pass` computes for region pixel (x, y) (see PixelPass).
+  FilmPixel sample_pixel(int x, int y, const PixelPass& pass, TraceState& state) const {
+    return pass.kind == PixelPass::Kind::kSupersample ? supersample(x, y, state) : more_samples(x, y, pass, state);
+  }
   /// The adaptive anti-aliasing estimate of region pixel (x, y): N×N jittered cells of --spp
   /// stratified samples each, which replace the pixel's first-pass estimate (the original's
   /// rule).
   FilmPixel supersample(int x, int y, TraceState& state) const;
+  /// Samples pass.first to pass.first + pass.count − 1 of region pixel (x, y), stratified over
+  /// the pixel among themselves, each from its own stream: what a noise target's pass adds.
+  FilmPixel more_samples(int x, int y, const PixelPass& pass, TraceState& state) const;
 
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }

@@ -12,9 +12,10 @@
 
 namespace mjray {
 
-/// Pixels of one finished piece of an anti-aliasing pass: row-major pixel indices and the
-/// film pixels that replace theirs.
-struct SupersampledChunk {
+/// Pixels of one finished piece of a pass over chosen pixels: row-major pixel indices and what
+/// the pass computed for each (PixelPass says whether it replaces their estimates or adds to
+/// them).
+struct PixelChunk {
   std::span<const int> pixels;
   std::span<const FilmPixel> values;
 };
@@ -32,10 +33,10 @@ class TileExecutor {
   /// requested are skipped. Returns whether every tile was done.
   virtual bool render_tiles(std::span<const int> tiles, Film& film, std::stop_token stop,
                             const std::function<void(int tile)>& on_tile) = 0;
-  /// Supersamples `pixels` (row-major indices); `on_chunk` receives each finished piece (on
-  /// any thread), whose `pixels` is a subspan of `pixels`. Returns whether all were done.
-  virtual bool render_pixels(std::span<const int> pixels, std::stop_token stop,
-                             const std::function<void(const SupersampledChunk&)>& on_chunk) = 0;
+  /// Computes `pass` for `pixels` (row-major indices); `on_chunk` receives each finished piece
+  /// (on any thread), whose `pixels` is a subspan of `pixels`. Returns whether all were done.
+  virtual bool render_pixels(std::span<const int> pixels, const PixelPass& pass, std::stop_token stop,
+                             const std::function<void(const PixelChunk&)>& on_chunk) = 0;
   /// Rays cast so far, by kind (call when no render_* is running).
   virtual RayCounters rays() const = 0;
   /// Rays of every kind cast so far, as published after each tile or chunk (any thread).

@@ -34,8 +34,8 @@ bool TileRender::render_tiles(std::span<const int> tiles, Film& film, std::stop_
   return !skipped;
 }
 
-bool TileRender::render_pixels(std::span<const int> pixels, std::stop_token stop,
-                               const std::function<void(const SupersampledChunk&)>& on_chunk) {
+bool TileRender::render_pixels(std::span<const int> pixels, const PixelPass& pass, std::stop_token stop,
+                               const std::function<void(const PixelChunk&)>& on_chunk) {
   std::atomic<bool> skipped{false};
   const int width = sampler_.width();
   const int chunks = int((pixels.size() + kChunk - 1) / kChunk);
@@ -47,7 +47,7 @@ bool TileRender::render_pixels(std::span<const int> pixels, std::stop_token stop
     const size_t begin = size_t(c) * kChunk, end = std::min(pixels.size(), begin + kChunk);
     FilmPixel values[kChunk];
     for (size_t k = begin; k < end; ++k)
-      values[k - begin] = sampler_.supersample(pixels[k] % width, pixels[k] / width, states_[size_t(thread)]);
+      values[k - begin] = sampler_.sample_pixel(pixels[k] % width, pixels[k] / width, pass, states_[size_t(thread)]);
     publish(thread);
     on_chunk({pixels.subspan(begin, end - begin), std::span<const FilmPixel>(values, end - begin)});
   });

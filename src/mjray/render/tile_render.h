@@ -31,10 +31,10 @@ class TileRender final : public TileExecutor {
   bool render_tiles(std::span<const int> tiles, Film& film, std::stop_token stop,
                     const std::function<void(int tile)>& on_tile = {}) override;
 
-  /// Supersamples `pixels` (row-major indices) in chunks of kChunk; `on_chunk` receives each
-  /// finished chunk on the worker (the caller stores it). Returns whether all were done.
-  bool render_pixels(std::span<const int> pixels, std::stop_token stop,
-                     const std::function<void(const SupersampledChunk&)>& on_chunk) override;
+  /// Computes `pass` for `pixels` (row-major indices) in chunks of kChunk; `on_chunk` receives
+  /// each finished chunk on the worker (the caller stores it). Returns whether all were done.
+  bool render_pixels(std::span<const int> pixels, const PixelPass& pass, std::stop_token stop,
+                     const std::function<void(const PixelChunk&)>& on_chunk) override;
   static constexpr int kChunk = 64;
 
   /// Rays cast so far, by kind, summed over threads (call when no render_* is running).
