@@ -114,6 +114,13 @@ int main(int argc, char** argv) {
     for (const auto& e : errors) print_error(e);
     return 1;
   }
+  // A scene that reads the clock may differ from rank to rank: the image would be a patchwork.
+  if (world.size() > 1 && !scene.reads_clock.empty()) {
+    if (!root) return 0;
+    print_error(options.scene.string() + ": the script reads the clock (" + scene.reads_clock +
+                "), so each rank may describe another scene; render it with mjray, or on one rank");
+    return 1;
+  }
   const JobFingerprints fingerprints(scene, options.job);
   if (const std::string verdict = agree_on_scene(world, all_fingerprints(fingerprints, scene.jobs.size()), ranks);
       !verdict.empty()) {

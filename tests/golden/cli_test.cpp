@@ -183,6 +183,18 @@ TEST_F(GoldenCli, AllowReadLetsAStrangersSceneReadAFolderOfModels) {
             0u) << r.err;
 }
 
+TEST_F(GoldenCli, AScriptThatReadsTheClockIsNotResumed) {
+  // Its scene may differ from run to run: a resume would splice two scenes into one image.
+  write("scene.lua", "local wobble = os.time() % 2\n" + tiny_scene());
+  RunResult r = run({"--quiet", (dir_ / "scene.lua").string()});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  r = run({"--quiet", "--resume", (dir_ / "scene.lua").string()});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(r.err, "mjray: error: " + (dir_ / "scene.lua").string() + ": --resume: the script reads the clock (os.time at " +
+                       (dir_ / "scene.lua").string() + ":1), so the scene it describes may differ from the one the "
+                       "interrupted run rendered; render without --resume\n");
+}
+
 TEST_F(GoldenCli, HelpAndVersionExitZero) {
   RunResult r = run({"--help"});
   EXPECT_EQ(r.exit_code, 0);

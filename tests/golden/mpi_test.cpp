@@ -265,6 +265,17 @@ TEST_F(MpiRender, FramesCropSizeDefinesAndVideoGiveWhatMjrayGives) {
   EXPECT_EQ(read_file(ranks / "v.gif"), read_file(reference / "v.gif"));
 }
 
+TEST_F(MpiRender, AScriptThatReadsTheClockIsRefusedOnMoreThanOneRank) {
+  const auto scene = write_file(dir_ / "clock.lua", "local t = os.clock()\n" + glass_scene("'clock.png'"));
+  const auto log = dir_ / "log.txt";
+  EXPECT_EQ(run(plus(mpirun(2), {"-j", "1", scene.string()}), log), 1);
+  EXPECT_NE(read_file(log).find("the script reads the clock (os.clock at " + scene.string() +
+                                ":1), so each rank may describe another scene"),
+            std::string::npos) << read_file(log);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "clock.png"));
+  EXPECT_EQ(run(plus(mpirun(1), {"--quiet", "-j", "1", scene.string()}), log), 0) << read_file(log);
+}
+
 TEST_F(MpiRender, WatchIsRefusedWithTheUsageExitCode) {
   const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
   const auto log = dir_ / "log.txt";

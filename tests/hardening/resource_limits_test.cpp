@@ -9,6 +9,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include "mjray/io/obj_loader.h"
 #include "mjray/lua/scene_loader.h"
@@ -105,6 +106,65 @@ TEST_F(HardeningLimits, FinalizersAreRefusedInTheSandbox) {
   // Metatables without one are as usual.
   EXPECT_EQ(load("local t = setmetatable({}, {__index = function() return 3 end})\nassert(t.x == 3)\n"
                  "root = gr.node('root')\n" + render_call()).jobs.size(), 1u);
+}
+
+/// A PNG of `width` × `height` pixels whose pixels' data stops at once: a decompression bomb
+/// is refused on its header, before any pixel is decoded.
+std::string png_header_only(uint32_t width, uint32_t height) {
+  const auto be32 = [](uint32_t v) {
+    return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)};
+  };
+  const auto chunk = [&](const std::string& type_and_data) {
+    const uint32_t crc = uint32_t(crc32(0, reinterpret_cast<const Bytef*>(type_and_data.data()), uInt(type_and_data.size())));
+    return be32(uint32_t(type_and_data.size() - 4)) + type_and_data + be32(crc);
+  };
+  // 8-bit RGBA; then the start of the pixels' data, which the header's reader stops at.
+  const std::string ihdr = "IHDR" + be32(width) + be32(height) + std::string{8, 6, 0, 0, 0};
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk(ihdr) + chunk(std::string("IDAT\x78\x9c\x03\x00", 8));
+}
+
+TEST_F(HardeningLimits, WhatAFileWouldCostIsRefusedBeforeItIsAllocated) {
+  // Each would take gigabytes from a small file; under 16 MiB each is refused on what it
+  // declares or as it grows, and the process stays small.
+  SceneLoadOptions options;
+  options.lua_memory_bytes = size_t(16) << 20;
+  write("bomb.png", png_header_only(16000, 16000));
+  std::string fan = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3";
+  for (int i = 0; i < 4'000'000; ++i) fan += " 1";
+  write("fan.obj", fan + "\n");
+  const long rss_before = peak_rss_kib();
+  for (const std::string& call : {std::string("gr.filetexture('bomb.png')"), std::string("gr.background('bomb.png')"),
+                                  std::string("gr.mesh('m', 'fan.obj')"), std::string("readobj('fan.obj')")}) {
+    SCOPED_TRACE(call);
+    EXPECT_EQ(error_of("local x = " + call + "\n", options), at(1) + kCapped);
+  }
+  EXPECT_EQ(error_of("local f = {}\nfor i = 0, 299999 do f[#f + 1] = i % 3 end\n"
+                     "local faces = {}\nfor i = 1, 300 do faces[i] = f end\n"
+                     "local m = gr.mesh('m', {{0,0,0},{1,0,0},{0,1,0}}, faces)\n", options),
+            at(5) + kCapped);
+  EXPECT_LT(peak_rss_kib() - rss_before, 256 * 1024);
+}
+
+TEST_F(HardeningLimits, AnInstancedSceneThatCannotFitIsRefusedBeforeItIsBuilt) {
+  // 10^8 spheres from a few lines: within the primitive limit, but some 80 GB once built.
+  const SceneDescription scene = load("local level = gr.nh_sphere('s', {0, 0, 0}, 1)\n"
+                                      "for depth = 1, 4 do\n"
+                                      "  local up = gr.node('n' .. depth)\n"
+                                      "  for i = 1, 100 do up:add_child(level) end\n"
+                                      "  level = up\n"
+                                      "end\n"
+                                      "root = level\n" + render_call());
+  const auto start = Clock::now();
+  try {
+    flatten(scene.jobs.at(0));
+    FAIL() << "expected a refusal";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("gr.render: the scene expands to 100000000 primitives and mesh vertices once "
+                                         "every instance is counted, about 74.5 GiB with its acceleration structure, "
+                                         "more than the"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_LT(seconds_since(start), 5.0);
 }
 
 TEST_F(HardeningLimits, ScriptsHaveAGenerousTimeLimitByDefault) {

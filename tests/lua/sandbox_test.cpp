@@ -6,6 +6,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "mjray/lua/scene_loader.h"
 #include "support/lua_script_test.h"
@@ -252,6 +253,66 @@ TEST_F(LuaSandbox, TerminalCommandsInMessagesAndPrintsAreShownEscaped) {
   testing::internal::CaptureStdout();
   load("print('a\\27]0;title\\7b', 1, nil, 'c\\td')\n" + render_call());
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "a\\027]0;title\\007b\t1\tnil\tc\td\n");
+}
+
+TEST_F(LuaSandbox, DofileRunsTextOnly) {
+  write("chunk.luac", std::string("\x1bLua\x54\x00") + std::string(40, '\x01'));
+  const std::string message = error_of("dofile('chunk.luac')\n");
+  EXPECT_EQ(message.rfind(at(1), 0), 0u) << message;
+  EXPECT_NE(message.find("attempt to load a binary chunk (mode is 't')"), std::string::npos) << message;
+  write("part.lua", "return 40 + 2\n");
+  EXPECT_EQ(result_of("local a, b = dofile('part.lua')\n" + render_call("tostring(a) .. tostring(b)")), "42nil");
+}
+
+TEST_F(LuaSandbox, NoScriptReachesAFinalizerOfMjraysOrOfAFile) {
+  // The metatables of gr.* values and of files show their name only: no __gc to call (which
+  // would free a node still in use) and none to add (which would run with no time limit).
+  EXPECT_EQ(result_of("local m = getmetatable(gr.node('a'))\n" + render_call("tostring(m)")), "gr.node");
+  EXPECT_EQ(result_of("local m = getmetatable(io.stdout)\n" + render_call("tostring(m)")), "FILE*");
+  EXPECT_EQ(error_of("getmetatable(gr.node('a')).__gc(io.stdout)\n"), at(1) + "attempt to call a nil value (field '__gc')");
+  EXPECT_EQ(error_of("getmetatable(io.stdout).__gc = function() end\n"),
+            at(1) + "attempt to index a string value");
+  EXPECT_EQ(error_of("setmetatable(gr.node('a'), {})\n"), at(1) + "setmetatable: argument 1 must be a table, got a gr.node");
+}
+
+TEST_F(LuaSandbox, TerminalCommandsWrittenAnyWayAreEscapedAndStandardInputIsRefused) {
+  testing::internal::CaptureStdout();
+  load("local ch = string.char\nstring.format = function(f, b) return ch(b) end\n"  // cannot undo print's escaping
+       "print('a\\27[2J', '\\194\\155', '\\226\\128\\174', '\\195\\169')\n"
+       "io.write('w\\27[31m\\n')\nio.stdout:write('s\\27]0;t\\7\\n')\n" + render_call());
+  EXPECT_EQ(testing::internal::GetCapturedStdout(),
+            "a\\027[2J\t\\194\\155\t\\226\\128\\174\t\xc3\xa9\nw\\027[31m\ns\\027]0;t\\007\n");
+  for (const std::string call : {"io.read()", "io.stdin:read()", "io.lines()", "io.input():read('l')"}) {
+    const std::string message = error_of("local x = " + call + "\n");
+    EXPECT_NE(message.find("from standard input is not allowed"), std::string::npos) << call << ": " << message;
+    EXPECT_EQ(message.rfind(at(1), 0), 0u) << call << ": " << message;
+  }
+}
+
+TEST_F(LuaSandbox, ADanglingLinkOutIsRefusedLikeAnyOtherWayOut) {
+  // Whether the file a link points at exists must not show: both are "outside".
+  fs::create_symlink("/no/such/file.txt", dir_ / "dangling.txt");
+  fs::create_symlink("/etc/hostname", dir_ / "existing.txt");
+  EXPECT_EQ(error_of("local f = io.open('dangling.txt')\n"), at(1) + "io.open: 'dangling.txt'" + kOutside);
+  EXPECT_EQ(error_of("local f = io.open('existing.txt')\n"), at(1) + "io.open: 'existing.txt'" + kOutside);
+  EXPECT_EQ(error_of("local m = gr.mesh('m', 'dangling.txt')\n"), at(1) + "gr.mesh: 'dangling.txt'" + kOutside);
+}
+
+TEST_F(LuaSandbox, APipeOrDeviceInTheScenesFolderIsNoFileToRead) {
+  ASSERT_EQ(::mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+  EXPECT_EQ(error_of("local f = io.open('pipe')\n"),
+            at(1) + "io.open: 'pipe' is not a regular file (a device, a pipe or a folder); " + kHint);
+}
+
+TEST_F(LuaSandbox, TheClockIsNotedAndMathRandomseedWithoutAValueTakesTheSeed) {
+  EXPECT_EQ(load("local t = os.time({year = 2000, month = 1, day = 1})\nlocal d = os.date('%Y', 0)\n" + render_call())
+                .reads_clock,
+            "");
+  EXPECT_EQ(load("\nlocal t = os.time()\nlocal c = os.clock()\n" + render_call()).reads_clock,
+            "os.time at " + at(2).substr(0, at(2).size() - 2));
+  EXPECT_EQ(load("local d = os.date('%H')\n" + render_call()).reads_clock, "os.date at " + at(1).substr(0, at(1).size() - 2));
+  const std::string draw = "math.randomseed()\nlocal a = math.random(1, 1000000000)\n" + render_call("tostring(a)");
+  EXPECT_EQ(result_of(draw), result_of(draw));
 }
 
 TEST_F(LuaSandbox, DebugLibraryIsAbsent) {

@@ -36,8 +36,10 @@ std::string error_message(const std::exception& e);
 /// A character that a terminal takes as a command rather than text (below 0x20, and DEL).
 bool is_control_character(char c);
 
-/// `text` made safe to show on a terminal: control characters as the Lua escapes that write
-/// them, in three digits ("\027", so that a digit after one is not read as part of it). With
+/// `text` made safe to show on a terminal: control characters, C1 controls and bidirectional
+/// overrides (whole UTF-8 characters), and bytes that are no part of a UTF-8 character, as the
+/// Lua escapes that write them, in three digits ("\027", so that a digit after one is not read
+/// as part of it); other UTF-8 characters stay as they are. With
 /// `keep_layout`, line breaks and tabs stay as they are (a message's own layout); without,
 /// they become "\n" and "\t" and backslashes are doubled, so that the text reads back as it was.
 std::string escape_control_characters(std::string_view text, bool keep_layout);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "mjray/core/error.h"
+#include "mjray/io/image_reader.h"
 
 namespace mjray {
 
@@ -98,8 +99,8 @@ Image decode_exr(const std::filesystem::path& path, size_t max_pixels) {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i window = file.header().dataWindow();
     const int64_t width = int64_t(window.max.x) - window.min.x + 1, height = int64_t(window.max.y) - window.min.y + 1;
-    if (width <= 0 || height <= 0 || uint64_t(width) * uint64_t(height) > max_pixels)
-      fail_read(path, "bad EXR size " + std::to_string(width) + "x" + std::to_string(height));
+    if (width <= 0 || height <= 0) fail_read(path, "bad EXR size " + std::to_string(width) + "x" + std::to_string(height));
+    check_image_size(path, uint64_t(width), uint64_t(height), max_pixels);
     const Imf::ChannelList& channels = file.header().channels();
     const bool grey = !channels.findChannel("R") && !channels.findChannel("G") && !channels.findChannel("B");
     if (grey && !channels.findChannel("Y")) fail_read(path, "the EXR has no R, G, B or Y channel");

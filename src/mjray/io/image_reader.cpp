@@ -18,9 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Largest image read_image accepts, so a corrupt header cannot demand gigabytes.
-constexpr size_t kMaxReadPixels = size_t(1) << 28;
-
 struct FileCloser {
   void operator()(FILE* file) const { std::fclose(file); }
 };
@@ -57,13 +54,14 @@ void rewind(const fs::path& path, FILE* file) {
 Image read_image(const fs::path& path, const ImageReadOptions& options) {
   OpenedImage opened = open_image(path);
   FILE* file = opened.file.get();
-  if (opened.is_png()) return decode_png(path, file, kMaxReadPixels, options.keep_16_bits);
-  if (opened.is_ppm()) return decode_ppm(path, file, kMaxReadPixels);
+  const size_t most = std::min(options.max_pixels, kMaxReadPixels);
+  if (opened.is_png()) return decode_png(path, file, most, options.keep_16_bits);
+  if (opened.is_ppm()) return decode_ppm(path, file, most);
   if (opened.is_jpeg()) {
     rewind(path, file);
-    return read_jpeg(path, file, kMaxReadPixels);
+    return read_jpeg(path, file, most);
   }
-  if (opened.is_exr()) return decode_exr(path, kMaxReadPixels);
+  if (opened.is_exr()) return decode_exr(path, most);
   fail_read(path, "not a PNG, JPEG, OpenEXR or binary (P6) PPM file");
 }
 

@@ -11,6 +11,7 @@
 #include <jerror.h>
 
 #include "mjray/core/error.h"
+#include "mjray/io/image_reader.h"
 #include "mjray/io/quantise.h"
 
 namespace mjray {
@@ -155,8 +156,8 @@ Image read_jpeg(const std::filesystem::path& path, FILE* file, size_t max_pixels
   JpegReader r;
   if (!read_jpeg_header(r, file)) fail(path, std::string("libjpeg: ") + r.error.message);
   const size_t width = r.info.image_width, height = r.info.image_height;
-  if (width == 0 || height == 0 || width * height > max_pixels)
-    fail(path, "bad JPEG size " + std::to_string(width) + "x" + std::to_string(height));
+  if (width == 0 || height == 0) fail(path, "bad JPEG size " + std::to_string(width) + "x" + std::to_string(height));
+  check_image_size(path, width, height, max_pixels);
   // Left uninitialised: only rows the decoder reaches are touched, so a truncated file with a
   // large declared size fails before it costs memory.
   const std::unique_ptr<unsigned char[]> rgb(new unsigned char[width * height * 3]);

@@ -37,7 +37,13 @@ bool is_obj_keyword(std::string_view keyword) {
 // buffer the size of the file.
 class ObjParser {
  public:
-  ObjParser(const std::string& source_name, ObjSummary* summary) : source_name_(source_name), summary_(summary) {}
+  ObjParser(const std::string& source_name, ObjSummary* summary, size_t max_bytes = SIZE_MAX)
+      : source_name_(source_name), summary_(summary), max_bytes_(max_bytes) {}
+
+  /// Throws ObjTooLarge when the mesh holds more than it may.
+  void check_size() const {
+    if (mesh_.memory_bytes() > max_bytes_) throw ObjTooLarge(mesh_.memory_bytes());
+  }
 
   /// Parses `text`, which holds whole statements and follows the text fed before.
   void feed(std::string_view text) {
@@ -213,6 +219,8 @@ class ObjParser {
       const MeshCorner corner = read_corner();
       if (corners >= 2) {
         mesh_.triangles.push_back({first, previous, corner});
+        // A face of millions of corners is a few bytes of text each: check as it grows.
+        if ((mesh_.triangles.size() & 4095) == 0) check_size();
       } else if (corners == 0) {
         first = corner;
       }
@@ -291,6 +299,7 @@ class ObjParser {
   size_t line_ = 1;
   TriangleMesh mesh_;
   ObjSummary* summary_;
+  size_t max_bytes_;
 };
 
 /// The length of the longest start of `text` that ends a statement: after its last line end that
@@ -330,7 +339,7 @@ std::string check_obj_content(const TriangleMesh& mesh, const ObjSummary& summar
          " statements are not OBJ" + stranger;
 }
 
-TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary, size_t piece_bytes) {
+TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary, size_t piece_bytes, size_t max_bytes) {
   const std::string name = path.string();
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              &std::fclose);
@@ -342,7 +351,7 @@ TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary, si
   // Read in pieces, each parsed while it is in the cache: a buffer the size of the file would
   // cost as much again in fresh memory, which is slow to fault in. A line longer than the
   // buffer grows it.
-  ObjParser parser(name, summary);
+  ObjParser parser(name, summary, max_bytes);
   std::error_code size_error;
   const auto size = std::filesystem::file_size(path, size_error);
   const size_t first_piece = size_error ? piece_bytes : std::min<uintmax_t>(piece_bytes, size + 1);
@@ -358,6 +367,7 @@ TriangleMesh load_obj(const std::filesystem::path& path, ObjSummary* summary, si
     const std::string_view text(buffer.data(), held + read);
     const size_t parsed = at_end ? text.size() : statements_end(text);
     parser.feed(text.substr(0, parsed));
+    parser.check_size();
     held = text.size() - parsed;
     std::memmove(buffer.data(), buffer.data() + parsed, held);
     if (at_end) return parser.finish();

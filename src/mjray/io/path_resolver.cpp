@@ -9,8 +9,27 @@ namespace fs = std::filesystem;
 fs::path real_place(const fs::path& path) {
   std::error_code ec;
   const fs::path absolute = fs::absolute(path, ec);
-  const fs::path canonical = fs::weakly_canonical(absolute, ec);
-  return ec ? absolute.lexically_normal() : canonical;
+  fs::path place = fs::weakly_canonical(absolute, ec);
+  if (ec) place = absolute.lexically_normal();
+  // weakly_canonical keeps a dangling link's own name: follow such links by hand, so that a
+  // link to a missing file outside is judged where it points (and says nothing of what exists).
+  for (int hops = 0; hops < 40; ++hops) {
+    fs::path prefix;
+    bool followed = false;
+    for (const fs::path& part : place) {
+      prefix /= part;
+      if (!fs::is_symlink(prefix, ec)) continue;
+      const fs::path target = fs::read_symlink(prefix, ec);
+      if (ec) break;
+      const fs::path rest = place.lexically_relative(prefix);
+      const fs::path base = target.is_absolute() ? target : prefix.parent_path() / target;
+      place = (rest.empty() || rest == ".") ? base.lexically_normal() : (base / rest).lexically_normal();
+      followed = true;
+      break;
+    }
+    if (!followed) return place;
+  }
+  return place;
 }
 
 bool is_within(const fs::path& path, const fs::path& root) {

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "mjray/core/error.h"
+#include "mjray/io/image_reader.h"
 #include "mjray/core/parallel_for.h"
 #include "mjray/io/big_endian.h"
 #include "mjray/io/quantise.h"
@@ -183,8 +184,7 @@ Image decode_png(const fs::path& path, FILE* file, size_t max_pixels, bool keep_
   png_uint_32 width = 0, height = 0;
   int bit_depth = 8;
   if (!read_header(r, width, height, keep_16, bit_depth)) fail_read(path, failure(r.io));
-  if (size_t(width) * size_t(height) > max_pixels)
-    fail_read(path, "image too large (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+  check_image_size(path, width, height, max_pixels);
   // Compute the least data such an image needs: one bit per pixel and a filter byte per row,
   // deflated at most 1032:1. A smaller file is truncated, and must not cost gigabytes first.
   std::error_code ec;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mjray/core/error.h"
+#include "mjray/io/image_reader.h"
 #include "mjray/io/quantise.h"
 
 namespace mjray {
@@ -86,8 +87,8 @@ Image decode_ppm(const fs::path& path, FILE* file, size_t max_pixels) {
       !read_field(file, maxval))
     fail_read(path, "malformed PPM header");
   if (maxval != 255) fail_read(path, "PPM maxval " + std::to_string(maxval) + " is not 8-bit");
-  if (width <= 0 || height <= 0 || size_t(width) * size_t(height) > max_pixels)
-    fail_read(path, "bad PPM size " + std::to_string(width) + "x" + std::to_string(height));
+  if (width <= 0 || height <= 0) fail_read(path, "bad PPM size " + std::to_string(width) + "x" + std::to_string(height));
+  check_image_size(path, uint64_t(width), uint64_t(height), max_pixels);
   const size_t needed = size_t(width) * size_t(height) * 3;
   std::error_code ec;
   const long offset = std::ftell(file);

@@ -45,6 +45,10 @@ void check_video(const SceneDescription& scene, const std::vector<size_t>& jobs,
 }  // namespace
 
 RunPlan plan_run(const SceneDescription& scene, const RunOptions& options) {
+  if (options.report.resume && !scene.reads_clock.empty())
+    throw SceneError(scene.script.string() + ": --resume: the script reads the clock (" + scene.reads_clock +
+                     "), so the scene it describes may differ from the one the interrupted run rendered; render "
+                     "without --resume");
   RunPlan plan{selected_jobs(scene, options.job.frames), JobFingerprints(scene, options.job), scene.warnings, scene.notes};
   check_job_cameras(scene, plan.jobs, options.job);
   for (std::string& w : check_outputs(scene, options.job.outputs, plan.jobs)) plan.warnings.push_back(std::move(w));

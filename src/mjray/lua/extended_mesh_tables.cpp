@@ -128,6 +128,7 @@ std::shared_ptr<const TriangleMesh> read_extended_mesh_tables(lua_State* L, int 
   if (lua_type(L, faces) != LUA_TTABLE) fail(fn, "the mesh needs a faces table");
   const auto face_count = lua_Integer(lua_rawlen(L, faces));
   std::vector<MeshCorner> corners;
+  KeptGrowth kept(L);
   for (lua_Integer f = 1; f <= face_count; ++f) {
     lua_rawgeti(L, faces, f);
     const std::string where = "face " + std::to_string(f);
@@ -143,11 +144,12 @@ std::shared_ptr<const TriangleMesh> read_extended_mesh_tables(lua_State* L, int 
     lua_pop(L, 1);
     for (size_t k = 2; k < corners.size(); ++k) mesh->triangles.push_back({corners[0], corners[k - 1], corners[k]});
     ++mesh->polygon_count;
+    kept.grew_to(mesh->memory_bytes());
   }
   lua_settop(L, top);
   if (mesh->positions.empty() || mesh->triangles.empty())
     fail(fn, "a mesh needs at least one position and one face");
-  keep_bytes(L, mesh->memory_bytes());
+  kept.grew_to(mesh->memory_bytes(), true);
   return mesh;
 }
 

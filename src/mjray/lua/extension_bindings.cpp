@@ -145,11 +145,7 @@ int gr_extendedmesh(lua_State* L) {
 }  // namespace
 
 void register_extensions(lua_State* L) {
-  luaL_newmetatable(L, kObjDataType);
-  lua_pushcfunction(L, collect_shared<const TriangleMesh>);
-  lua_setfield(L, -2, "__gc");
-  lua_pushstring(L, kObjDataType);
-  lua_setfield(L, -2, "__name");
+  new_userdata_type(L, kObjDataType, collect_shared<const TriangleMesh>);
   lua_pop(L, 1);
 
   lua_getglobal(L, "gr");

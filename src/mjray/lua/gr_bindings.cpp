@@ -81,6 +81,7 @@ std::shared_ptr<const TriangleMesh> table_mesh(lua_State* L, const char* fn) {
   }
   const auto face_count = lua_Integer(lua_rawlen(L, 3));
   std::vector<int32_t> index;
+  KeptGrowth kept(L);
   for (lua_Integer f = 1; f <= face_count; ++f) {
     lua_rawgeti(L, 3, f);
     const int face = lua_gettop(L);
@@ -107,10 +108,11 @@ std::shared_ptr<const TriangleMesh> table_mesh(lua_State* L, const char* fn) {
     for (size_t k = 2; k < index.size(); ++k)
       mesh->triangles.push_back({MeshCorner{index[0]}, MeshCorner{index[k - 1]}, MeshCorner{index[k]}});
     ++mesh->polygon_count;
+    kept.grew_to(mesh->memory_bytes());
   }
   if (mesh->positions.empty() || mesh->triangles.empty())
     throw ArgumentError(std::string(fn) + ": a mesh needs at least one vertex and one face");
-  keep_bytes(L, mesh->memory_bytes());
+  kept.grew_to(mesh->memory_bytes(), true);
   return mesh;
 }
 
@@ -385,19 +387,11 @@ int node_tostring(lua_State* L) {
   return 1;
 }
 
-void new_type(lua_State* L, const char* type, lua_CFunction gc) {
-  luaL_newmetatable(L, type);
-  lua_pushcfunction(L, gc);
-  lua_setfield(L, -2, "__gc");
-  lua_pushstring(L, type);
-  lua_setfield(L, -2, "__name");
-}
-
 }  // namespace
 
 void register_gr(lua_State* L) {
   // Node type: methods through __index.
-  new_type(L, kNodeType, collect_shared<LuaNode>);
+  new_userdata_type(L, kNodeType, collect_shared<LuaNode>);
   static const luaL_Reg node_methods[] = {
       {"add_child", guarded<node_add_child>}, {"set_material", guarded<node_set_material>},
       {"translate", guarded<node_translate>}, {"scale", guarded<node_scale>},
@@ -409,11 +403,11 @@ void register_gr(lua_State* L) {
   lua_setfield(L, -2, "__tostring");
   lua_pop(L, 1);
 
-  new_type(L, kMaterialType, collect_shared<Material>);
+  new_userdata_type(L, kMaterialType, collect_shared<Material>);
   lua_newtable(L);
   lua_setfield(L, -2, "__index");
   lua_pop(L, 1);
-  new_type(L, kLightType, collect_shared<Light>);
+  new_userdata_type(L, kLightType, collect_shared<Light>);
   lua_pop(L, 1);
 
   static const luaL_Reg gr_functions[] = {

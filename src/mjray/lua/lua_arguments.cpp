@@ -15,6 +15,16 @@ std::string printable(std::string_view text) { return escape_control_characters(
 
 }  // namespace
 
+void new_userdata_type(lua_State* L, const char* type, lua_CFunction gc) {
+  luaL_newmetatable(L, type);
+  lua_pushcfunction(L, gc);
+  lua_setfield(L, -2, "__gc");
+  lua_pushstring(L, type);
+  lua_setfield(L, -2, "__name");
+  lua_pushstring(L, type);
+  lua_setfield(L, -2, "__metatable");
+}
+
 // --- argument readers (throw ArgumentError; `guarded` adds the caller's file:line) --------
 
 /// How the value at `index` reads in a message: "nothing", "nil", "the number 2.5", "the string 'x'",

@@ -39,13 +39,19 @@ std::shared_ptr<T>* test_shared(lua_State* L, int index, const char* type) {
   return static_cast<std::shared_ptr<T>*>(luaL_testudata(L, index, type));
 }
 
-/// __gc of a push_shared userdata.
+/// __gc of a push_shared userdata. It leaves an empty pointer behind, so that a second call
+/// does nothing (scripts cannot reach it: new_userdata_type hides the metatable).
 template <class T>
 int collect_shared(lua_State* L) {
   auto* p = static_cast<std::shared_ptr<T>*>(lua_touserdata(L, 1));
-  if (p) p->~shared_ptr<T>();
+  if (p) *p = nullptr;
   return 0;
 }
+
+/// Makes the metatable of a userdata type and leaves it on the stack: `gc` as __gc, the type's
+/// name as __name, and __metatable set, so that getmetatable shows a script the name only and
+/// no script can call, replace or add a finalizer.
+void new_userdata_type(lua_State* L, const char* type, lua_CFunction gc);
 
 /// How the value at `index` reads in a message: "nothing", "nil", "the number 2.5", "the string 'x'",
 /// "an empty table", "a table of 2 values", "a gr.light".

@@ -16,6 +16,7 @@ extern "C" {
 
 #include "mjray/core/error.h"
 #include "mjray/io/file_hash.h"
+#include "mjray/io/image_reader.h"
 #include "mjray/io/path_resolver.h"
 #include "mjray/lua/scene_loader.h"
 #include "mjray/scene/scene_description.h"
@@ -67,6 +68,38 @@ inline void push_string_past_cap(lua_State* L, const std::string& text) {
 /// Counts `bytes` that a binding is about to keep for the script against --lua-memory, with
 /// the Lua state's own; past the cap, throws ArgumentError instead and the load fails.
 void keep_bytes(lua_State* L, size_t bytes);
+
+/// keep_bytes for something a binding builds up from a script's tables (a mesh): charged as
+/// it grows, a step at a time, so that tables reused many times over (one face table in
+/// every slot) are refused before they cost gigabytes.
+class KeptGrowth {
+ public:
+  explicit KeptGrowth(lua_State* L) : L_(L) {}
+  /// The thing now takes `bytes`: charges what it grew by since the last charge, once that is
+  /// a step's worth (or when `final`).
+  void grew_to(size_t bytes, bool final = false) {
+    if (bytes > charged_ && (final || bytes - charged_ >= kStep)) {
+      keep_bytes(L_, bytes - charged_);
+      charged_ = bytes;
+    }
+  }
+
+ private:
+  static constexpr size_t kStep = size_t(1) << 20;
+  lua_State* L_;
+  size_t charged_ = 0;
+};
+
+/// The bytes a binding may still take under --lua-memory (SIZE_MAX without a cap), so that it
+/// can refuse what would pass it before allocating (a decompression bomb, a mesh of millions
+/// of triangles from a few lines of text).
+size_t memory_left(lua_State* L);
+
+/// Reads an image file for `fn` within memory_left, charged to the script as it keeps it;
+/// throws ArgumentError("FN: ...") when it cannot be read, and the --lua-memory error when it
+/// is larger than the script may still take.
+std::shared_ptr<Image> read_kept_image(lua_State* L, const char* fn, const std::filesystem::path& path,
+                                       ImageReadOptions options);
 
 /// A node as the script builds it: mutable until a gr.render call snapshots it.
 struct LuaNode {
@@ -156,6 +189,10 @@ void add_warning(lua_State* L, const std::string& text);
 
 /// "file:line" of the Lua code that called the running C function.
 FileLocation caller_location(lua_State* L);
+
+/// The chunk name of mjray's own Lua code (the sandbox's wrappers), which caller_location
+/// passes over: a refusal names the script's line, not the wrapper's.
+inline constexpr const char* kInternalChunk = "=(mjray)";
 
 /// The file a script names for `fn` to read (a mesh, a texture, an environment): found like
 /// every scene input, refused outside what the script may read, and recorded as an input.

@@ -3,13 +3,16 @@
 
 #include <cstring>
 #include <string>
+#include <string_view>
 
 extern "C" {
 #include <lauxlib.h>
 #include <lua.h>
+#include <lualib.h>
 }
 
 #include "mjray/io/obj_loader.h"
+#include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
 
 namespace mjray::lua {
@@ -37,7 +40,13 @@ std::string checked_read_path(lua_State* L, const char* fn, const std::string& n
     throw ArgumentError(std::string(fn) + ": " + e.what() + read_refusal_hint());
   }
   const std::filesystem::path path(name);
-  return (path.is_absolute() ? path : ctx.script_dir / path).string();
+  const std::filesystem::path meant = path.is_absolute() ? path : ctx.script_dir / path;
+  // A device or a pipe in the scene's folder (an archive can hold one) is no file to read.
+  std::error_code ec;
+  if (!ctx.options.unsafe_lua && std::filesystem::exists(meant, ec) && !std::filesystem::is_regular_file(meant, ec))
+    throw ArgumentError(std::string(fn) + ": '" + name + "' is not a regular file (a device, a pipe or a folder); " +
+                        kUnsafeHint);
+  return meant.string();
 }
 
 // --- refusing functions --------------------------------------------------------------------
@@ -136,6 +145,31 @@ int path_wrapper(lua_State* L) {
   return call_original(L);
 }
 
+/// Gives the error message on top of the stack the caller's line, as errors the originals
+/// raise get it (locate_original_error).
+int locate_message(lua_State* L) {
+  const std::string message = caller_location(L).to_string() + ": " + lua_tostring(L, -1);
+  lua_pop(L, 1);
+  push_string_past_cap(L, message);
+  return 1;
+}
+
+/// Continues dofile once its chunk has returned: every value the chunk returned.
+int dofile_results(lua_State* L, int, lua_KContext) { return lua_gettop(L) - 1; }
+
+/// dofile(name) loading text only, as loadfile does: a precompiled chunk can crash the VM.
+/// (No C++ object lives across the calls that may raise.)
+int dofile_text_only(lua_State* L) {
+  guarded<path_checked<kDofile, true>>(L);
+  lua_settop(L, 1);
+  if (luaL_loadfilex(L, lua_tostring(L, 1), "t") != LUA_OK) {
+    guarded<locate_message>(L);
+    return lua_error(L);
+  }
+  lua_callk(L, 0, LUA_MULTRET, 0, dofile_results);
+  return dofile_results(L, 0, 0);
+}
+
 /// Refuses a mode argument at `index` that asks for binary chunks only ('b'): forcing it to
 /// text would read the text the script meant to refuse.
 void refuse_binary_mode(lua_State* L, int index, const char* fn) {
@@ -207,6 +241,8 @@ int io_output(lua_State* L) {
 /// setmetatable(t, mt) without a __gc finalizer: Lua runs finalizers with no hooks, so no
 /// time or instruction limit reaches them, and some run only when the state closes.
 int finalizer_refused(lua_State* L) {
+  if (lua_type(L, 1) != LUA_TTABLE)
+    throw ArgumentError("setmetatable: argument 1 must be a table, got " + describe(L, 1));
   if (lua_type(L, 2) != LUA_TTABLE) return 0;  // the original reports bad arguments
   lua_pushliteral(L, "__gc");
   const bool has_finalizer = lua_rawget(L, 2) != LUA_TNIL;
@@ -219,6 +255,24 @@ int finalizer_refused(lua_State* L) {
 
 int setmetatable_checked(lua_State* L) {
   guarded<finalizer_refused>(L);
+  return call_original(L);
+}
+
+/// os.time(), os.clock() and os.date() without a time: their answer differs from run to run,
+/// and so may the scene. Notes the first such read (SceneDescription::reads_clock). Upvalue 2
+/// names the function.
+int clock_noted(lua_State* L) {
+  const char* name = lua_tostring(L, lua_upvalueindex(2));
+  const bool given_time = std::strcmp(name, "os.time") == 0 ? !lua_isnoneornil(L, 1)
+                          : std::strcmp(name, "os.date") == 0 ? !lua_isnoneornil(L, 2)
+                                                               : false;
+  std::string& first = context(L).description->reads_clock;
+  if (!given_time && first.empty()) first = std::string(name) + " at " + caller_location(L).to_string();
+  return 0;
+}
+
+int clock_reader(lua_State* L) {
+  guarded<clock_noted>(L);
   return call_original(L);
 }
 
@@ -330,6 +384,77 @@ void insert_searcher(lua_State* L, lua_Integer position, lua_CFunction searcher)
   lua_pop(L, 2);
 }
 
+// --- what reaches the terminal, and standard input -----------------------------------------
+
+/// escape(text): the text with terminal commands shown as escapes (escape_control_characters).
+int escape_for_terminal(lua_State* L) {
+  size_t length = 0;
+  const char* text = lua_tolstring(L, 1, &length);
+  push_string_past_cap(L, escape_control_characters(std::string_view(text ? text : "", length), true));
+  return 1;
+}
+
+/// Wraps print, io.write and every file's write so that terminal commands a script writes
+/// ("\027[2J") show as escapes, as its messages do; and every way to read standard input
+/// (io.read and io.lines on the default input, a file's read and lines on stdin) so that they
+/// refuse. The functions they call are captured now, before the script can replace any.
+/// Arguments of the chunk: escape, io.stdin, the refusal's hint.
+constexpr const char* kTerminalGuard = R"lua(
+local escape, stdin, hint = ...
+local raw_print, write, read, lines, input = print, io.write, io.read, io.lines, io.input
+local select, tostring, type, concat, unpack, error = select, tostring, type, table.concat, table.unpack, error
+local methods = getmetatable(stdin).__index
+local file_write, file_read, file_lines = methods.write, methods.read, methods.lines
+local function escaped(n, ...)
+  local values = {...}
+  for i = 1, n do
+    if type(values[i]) == 'string' then values[i] = escape(values[i]) end
+  end
+  return unpack(values, 1, n)
+end
+local function refuse_stdin(file, what)
+  if file == stdin then error(what .. ' from standard input is not allowed: ' .. hint, 3) end
+end
+print = function(...)
+  local n, parts = select('#', ...), {...}
+  for i = 1, n do parts[i] = escape(tostring(parts[i])) end
+  raw_print(concat(parts, '	', 1, n))
+end
+io.write = function(...) return write(escaped(select('#', ...), ...)) end
+methods.write = function(file, ...) return file_write(file, escaped(select('#', ...), ...)) end
+io.read = function(...)
+  refuse_stdin(input(), 'io.read')
+  return read(...)
+end
+io.lines = function(name, ...)
+  if name == nil then refuse_stdin(input(), 'io.lines') end
+  return lines(name, ...)
+end
+methods.read = function(file, ...)
+  refuse_stdin(file, 'file:read')
+  return file_read(file, ...)
+end
+methods.lines = function(file, ...)
+  refuse_stdin(file, 'file:lines')
+  return file_lines(file, ...)
+end
+)lua";
+
+void install_terminal_guard(lua_State* L) {
+  MJRAY_CHECK(luaL_loadbufferx(L, kTerminalGuard, std::strlen(kTerminalGuard), kInternalChunk, "t") == LUA_OK);
+  lua_pushcfunction(L, guarded<escape_for_terminal>);
+  lua_getglobal(L, "io");
+  lua_getfield(L, -1, "stdin");
+  lua_remove(L, -2);
+  lua_pushstring(L, kUnsafeHint);
+  lua_call(L, 3, 0);
+  // No script reaches the files' metatable: it could give files a finalizer, or undo the above.
+  luaL_getmetatable(L, LUA_FILEHANDLE);
+  lua_pushliteral(L, "FILE*");
+  lua_setfield(L, -2, "__metatable");
+  lua_pop(L, 1);
+}
+
 }  // namespace
 
 void install_compatibility(lua_State* L) {
@@ -355,8 +480,17 @@ void install_path_resolution(lua_State* L) {
   wrap(L, "io", "open", io_open);
   wrap(L, "io", "lines", path_wrapper<kIoLines, false>);
   wrap(L, "io", "input", path_wrapper<kIoInput, false>);
-  wrap(L, nullptr, "dofile", path_wrapper<kDofile, true>);
+  lua_pushcfunction(L, dofile_text_only);
+  lua_setglobal(L, "dofile");
   wrap(L, nullptr, "loadfile", loadfile_text_only);
+  for (const char* field : {"time", "clock", "date"}) {
+    lua_getglobal(L, "os");
+    lua_getfield(L, -1, field);
+    lua_pushfstring(L, "os.%s", field);
+    lua_pushcclosure(L, clock_reader, 2);
+    lua_setfield(L, -2, field);
+    lua_pop(L, 1);
+  }
   wrap(L, "os", "remove", os_file_operation);
   wrap(L, "os", "rename", os_file_operation);
 }
@@ -391,21 +525,7 @@ void install_sandbox(lua_State* L) {
   }
   lua_pop(L, 2);
 
-  // print shows terminal commands a script writes ("\027[2J") as escapes, as messages do.
-  const char* escaping_print =
-      "local print, select, tostring, gsub, concat = print, select, tostring, string.gsub, table.concat\n"
-      "local function escape(c)\n"
-      "  if c == '\\n' or c == '\\t' then return c end\n"
-      "  return string.format('\\\\%03d', c:byte())\n"
-      "end\n"
-      "return function(...)\n"
-      "  local n, parts = select('#', ...), {...}\n"
-      "  for i = 1, n do parts[i] = gsub(tostring(parts[i]), '[%c\\127]', escape) end\n"
-      "  print(concat(parts, '\\t', 1, n))\n"
-      "end\n";
-  MJRAY_CHECK(luaL_loadstring(L, escaping_print) == LUA_OK);
-  lua_call(L, 0, 1);
-  lua_setglobal(L, "print");
+  install_terminal_guard(L);
 
   // The debug library can reach every upvalue and the registry: remove it.
   lua_pushnil(L);

@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -40,11 +41,12 @@ LoaderContext& context(lua_State* L) {
 void set_context(lua_State* L, LoaderContext* ctx) { context_slot(L) = ctx; }
 
 FileLocation caller_location(lua_State* L) {
-  // Level 1 is the running C function's caller; skip C frames (e.g. pcall) to the Lua line.
+  // Level 1 is the running C function's caller; skip C frames (e.g. pcall) and mjray's own Lua
+  // wrappers (kInternalChunk) to the script's line.
   lua_Debug ar;
   for (int level = 1; lua_getstack(L, level, &ar); ++level) {
     lua_getinfo(L, "Sl", &ar);
-    if (ar.currentline > 0) {
+    if (ar.currentline > 0 && std::strcmp(ar.source, kInternalChunk) != 0) {
       const char* source = ar.source;
       std::string file = (source && source[0] == '@') ? source + 1 : ar.short_src;
       return {file, ar.currentline};
@@ -68,7 +70,13 @@ void add_warning(lua_State* L, const std::string& text) {
 
 std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::filesystem::path& path) {
   ObjSummary summary;
-  auto mesh = std::make_shared<const TriangleMesh>(load_obj(path, &summary));
+  std::shared_ptr<const TriangleMesh> mesh;
+  try {
+    mesh = std::make_shared<const TriangleMesh>(load_obj(path, &summary, kObjPieceBytes, memory_left(L)));
+  } catch (const ObjTooLarge& e) {
+    keep_bytes(L, e.bytes + 1);  // past the cap: the --lua-memory error
+    throw;
+  }
   keep_bytes(L, mesh->memory_bytes());
   if (const std::string warning = check_obj_content(*mesh, summary, path.string()); !warning.empty()) add_warning(L, warning);
   return mesh;
@@ -261,11 +269,26 @@ void set_defines(lua_State* L, const SceneLoadOptions& options, const std::files
 }
 
 /// Lua 5.4 seeds math.random from the time and an address: seed it from --seed instead.
+/// Lua 5.4 seeds math.random from the time and an address, and math.randomseed() without a
+/// value does so again: both take --seed instead, so that every run describes one scene.
+/// Upvalue 1: the original randomseed; 2: the seed.
+int randomseed_or_the_seed(lua_State* L) {
+  if (lua_gettop(L) == 0) lua_pushvalue(L, lua_upvalueindex(2));
+  lua_pushvalue(L, lua_upvalueindex(1));
+  lua_insert(L, 1);
+  lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
 void seed_math_random(lua_State* L, uint64_t seed) {
   lua_getglobal(L, "math");
   lua_getfield(L, -1, "randomseed");
   lua_pushinteger(L, lua_Integer(seed));
   lua_call(L, 1, 0);
+  lua_getfield(L, -1, "randomseed");
+  lua_pushinteger(L, lua_Integer(seed));
+  lua_pushcclosure(L, randomseed_or_the_seed, 2);
+  lua_setfield(L, -2, "randomseed");
   lua_pop(L, 1);
 }
 
@@ -277,6 +300,32 @@ int on_panic(lua_State* L) {
 }
 
 }  // namespace
+
+size_t memory_left(lua_State* L) {
+  const ScriptLimits& limits = script_limits(L);
+  if (limits.memory_limit == 0 || !limits.enforcing) return SIZE_MAX;
+  const size_t used = limits.memory_used + limits.kept_bytes;
+  return used >= limits.memory_limit ? 0 : limits.memory_limit - used;
+}
+
+std::shared_ptr<Image> read_kept_image(lua_State* L, const char* fn, const std::filesystem::path& path,
+                                       ImageReadOptions options) {
+  // A decoded pixel takes a Color; decoding may hold up to a pixel's 16-bit RGB beside it.
+  constexpr size_t kDecodingBytesPerPixel = sizeof(Color) + 6;
+  const size_t left = memory_left(L);
+  options.max_pixels = std::min(options.max_pixels, left / kDecodingBytesPerPixel);
+  std::shared_ptr<Image> image;
+  try {
+    image = std::make_shared<Image>(read_image(path, options));
+  } catch (const ImageTooLarge& e) {
+    if (left != SIZE_MAX) keep_bytes(L, size_t(e.width * e.height * kDecodingBytesPerPixel));
+    throw ArgumentError(std::string(fn) + ": " + e.what());
+  } catch (const OutputError& e) {
+    throw ArgumentError(std::string(fn) + ": " + e.what());
+  }
+  keep_bytes(L, image->pixels().size() * sizeof(Color));
+  return image;
+}
 
 void keep_bytes(lua_State* L, size_t bytes) {
   ScriptLimits& limits = script_limits(L);

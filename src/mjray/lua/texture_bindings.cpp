@@ -60,13 +60,8 @@ int gr_filetexture(lua_State* L) {
   if (name.empty()) bad_argument(L, fn, 1, "file name", "a file name");
   const std::filesystem::path path = input_file(L, fn, name);
   ImageTexture texture;
-  try {
-    texture.image = read_image(path);
-    keep_bytes(L, texture.image.pixels().size() * sizeof(Color));
-    if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(texture.image);
-  } catch (const OutputError& e) {
-    throw ArgumentError(std::string(fn) + ": " + e.what());
-  }
+  texture.image = std::move(*read_kept_image(L, fn, path, {}));
+  if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(texture.image);
   return push_texture(L, std::move(texture));
 }
 
@@ -98,11 +93,7 @@ int material_set_material_texture(lua_State* L) {
 }  // namespace
 
 void register_textures(lua_State* L) {
-  luaL_newmetatable(L, kTextureType);
-  lua_pushcfunction(L, collect_shared<const Texture>);
-  lua_setfield(L, -2, "__gc");
-  lua_pushstring(L, kTextureType);
-  lua_setfield(L, -2, "__name");
+  new_userdata_type(L, kTextureType, collect_shared<const Texture>);
   lua_pop(L, 1);
 
   // The material method joins the gr.material metatable's __index table.

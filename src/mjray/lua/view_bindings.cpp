@@ -42,14 +42,9 @@ std::shared_ptr<const Image> environment_image(lua_State* L, const std::string& 
   const char* fn = "gr.background";
   if (name.empty()) bad_argument(L, fn, 1, "environment image", "a file name");
   const std::filesystem::path path = input_file(L, fn, name);
-  try {
-    auto image = std::make_shared<Image>(read_image(path, {.keep_16_bits = true}));
-    keep_bytes(L, image->pixels().size() * sizeof(Color));
-    if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(*image);
-    return image;
-  } catch (const OutputError& e) {
-    throw ArgumentError(std::string(fn) + ": " + e.what());
-  }
+  std::shared_ptr<Image> image = read_kept_image(L, fn, path, {.keep_16_bits = true});
+  if (context(L).options.srgb_textures && !holds_linear_values(path)) decode_srgb_8bit(*image);
+  return image;
 }
 
 /// gr.background({r,g,b}), gr.background({top}, {bottom}), gr.background('env.exr'), or

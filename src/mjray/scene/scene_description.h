@@ -64,6 +64,9 @@ struct SceneDescription {
   std::map<std::filesystem::path, std::string> input_hashes;
   /// The globals -D set before the script ran (name, value as given): they shape every job.
   std::vector<std::pair<std::string, std::string>> defines;
+  /// What first read the clock ("os.time at scene.lua:5"), empty when nothing did: the scene
+  /// may then differ from run to run, so a resume or another process could not match it.
+  std::string reads_clock;
 };
 
 }  // namespace mjray
