@@ -40,7 +40,8 @@ class PathTracedLight final : public IndirectLight {
   PathTracedLight(const World& world, const Accelerator& accel, int paths) : world_(world), accel_(accel), paths_(paths) {}
 
   Color radiance(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading&, float,
-                 RandomStream& random, RayCounters& counters) const override {
+                 RandomStream& random, TraceState& state) const override {
+    RayCounters& counters = state.rays;
     const LocalShading brdf = scattering(world_.materials[si.material], si);
     if (brdf.kd.is_black() && brdf.ks.is_black()) return {};
     Color sum;

@@ -17,8 +17,9 @@ class IndirectLight {
   virtual ~IndirectLight() = default;
   /// The light leaving `si` toward frame.wo; `local` is the material's local shading there
   /// and `weight` the share this surface has in its pixel (fewer samples where it is small).
+  /// `state` is the tracing thread's (its counters, and the camera sample's number).
   virtual Color radiance(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                         float weight, RandomStream& random, RayCounters& counters) const = 0;
+                         float weight, RandomStream& random, TraceState& state) const = 0;
 };
 
 }  // namespace mjray

@@ -41,6 +41,9 @@ struct OccluderCache {
 struct alignas(64) TraceState {
   RayCounters rays;
   OccluderCache occluders;
+  /// The number within its pixel of the camera sample being traced: what it reads of
+  /// per-sample data, such as which pass of a progressive photon map (set by the sampler).
+  uint32_t camera_sample = 0;
 };
 
 /// Computes the colour seen along camera rays. Implementations are immutable after

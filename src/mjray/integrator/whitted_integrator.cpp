@@ -43,7 +43,7 @@ Color WhittedIntegrator::surface_light(const SurfaceInteraction& si, const Shadi
                                        const LocalShading& local, float weight, RandomStream& random,
                                        TraceState& state) const {
   const Color direct = direct_light(si, frame, local, random, state);
-  return indirect_ ? direct + indirect_->radiance(si, frame, local, weight, random, state.rays) : direct;
+  return indirect_ ? direct + indirect_->radiance(si, frame, local, weight, random, state) : direct;
 }
 
 Color WhittedIntegrator::direct_light(const SurfaceInteraction& si, const ShadingFrame& frame,

@@ -223,6 +223,17 @@ std::vector<OptionSpec> make_table() {
        "samples",
        [](RunOptions& o, auto& n, auto& v) { o.job.render.samples_per_pixel = int(parse_integer(n, v, 1, 4096)); },
        [](const JobOptions& o) { return std::to_string(o.render.samples_per_pixel); }},
+      {{"--noise-threshold"}, "T",
+       "render until clean: after a first pass of at least 16 samples in every pixel, passes double the samples of "
+       "every pixel whose estimated error, relative to the square root of its brightness, is still above T (and of "
+       "its neighbours), up to --max-spp; 0.01 is clean, 0.05 a draft (default 0: off; not with -a)",
+       [](RunOptions& o, auto& n, auto& v) {
+         o.job.render.noise_threshold = v == "0" ? 0.f : float(parse_real(n, v, 0, 1, "a number in (0, 1], or 0 for off"));
+       },
+       [](const JobOptions& o) { return number_text(o.render.noise_threshold); }},
+      {{"--max-spp"}, "N", "the most samples --noise-threshold gives a pixel (default 4096)",
+       [](RunOptions& o, auto& n, auto& v) { o.job.render.max_samples_per_pixel = int(parse_integer(n, v, 1, 1 << 20)); },
+       [](const JobOptions& o) { return std::to_string(o.render.max_samples_per_pixel); }},
       {{"--seed"}, "N", "seed of all random sampling, and of the script's math.random (default 0)",
        [](RunOptions& o, auto& n, auto& v) {
          o.job.render.seed = uint64_t(parse_integer(n, v, 0, kMaxInt * kMaxInt));
@@ -237,6 +248,11 @@ std::vector<OptionSpec> make_table() {
       {{"--caustics"}, "N", "photon-mapped caustics from N photons (e.g. 1e6; default 0: off)",
        [](RunOptions& o, auto& n, auto& v) { o.job.photons.caustic_photons = parse_photon_count(n, v); },
        [](const JobOptions& o) { return std::to_string(o.photons.caustic_photons); }},
+      {{"--caustic-passes"}, "K",
+       "progressive caustics: K passes of --caustics N fresh photons each, searched over a shrinking radius; a "
+       "pixel's camera samples read the passes in turn, so that its caustics converge as it is sampled (default 1)",
+       [](RunOptions& o, auto& n, auto& v) { o.job.photons.caustic_passes = int(parse_integer(n, v, 1, 4096)); },
+       [](const JobOptions& o) { return std::to_string(o.photons.caustic_passes); }},
       {{"--gi"}, "N", "global illumination: N photons and final gathering (default 0: off)",
        [](RunOptions& o, auto& n, auto& v) { o.job.photons.global_photons = parse_photon_count(n, v); },
        [](const JobOptions& o) { return std::to_string(o.photons.global_photons); }},
@@ -342,6 +358,12 @@ std::vector<OptionSpec> make_table() {
        [](RunOptions& o, auto&, auto&) { o.report.print_stats = true; }},
       {{"--stats-json"}, "FILE", "write the statistics as JSON",
        [](RunOptions& o, auto&, auto& v) { o.report.stats_json = v; }},
+      {{"--time-limit"}, "S",
+       "stop after S seconds and write what is done: the images rendered, and the one under way as far as it got, "
+       "with its state, so that --resume goes on refining it (the only option whose images depend on the machine)",
+       [](RunOptions& o, auto& n, auto& v) {
+         o.report.time_limit_seconds = parse_real(n, v, 0, 1e9, "a number of seconds above 0");
+       }},
       {{"--quiet"}, "", "only warnings and errors (and the statistics that --stats asks for)",
        [](RunOptions& o, auto&, auto&) { o.report.quiet = true; }},
       {{"--resume"}, "",
@@ -375,6 +397,12 @@ std::vector<std::string> resolve_options(RunOptions& options) {
   AcceleratorOptions& accel = options.job.accel;
   std::vector<std::string> warnings;
   if (options.report.fps != 24 && !options.report.video) warnings.push_back("--fps has no effect without --video");
+  const RenderSettings& render = options.job.render;
+  if (render.targets_noise() && render.antialias_samples > 0)
+    throw UsageError("--noise-threshold and -a cannot be used together: -a is the report's anti-aliasing of bad pixels, "
+                     "--noise-threshold samples every pixel until it is clean; choose one");
+  if (!render.targets_noise() && render.max_samples_per_pixel != RenderSettings{}.max_samples_per_pixel)
+    warnings.push_back("--max-spp has no effect without --noise-threshold");
   // Compute the accelerator: --accel wins, then -o, then -g.
   if (r.optimal_grid) {
     accel.kind = "grid";

@@ -17,6 +17,8 @@ struct ReportOptions {
   bool print_stats = false;  ///< --stats
   std::optional<std::filesystem::path> stats_json;  ///< --stats-json
   bool resume = false;       ///< --resume
+  /// --time-limit: seconds after which the run stops and writes what it has (0: none).
+  double time_limit_seconds = 0;
   std::optional<std::filesystem::path> video;  ///< --video: the frames joined by ffmpeg
   int fps = 24;              ///< --fps of the video
   bool watch = false;        ///< --watch: the live preview

@@ -22,7 +22,8 @@ StratifiedGrid stratified_grid(int n) {
   return {n / rows, rows};
 }
 
-Color ImageSampler::trace(float sx, float sy, RandomStream& random, TraceState& state) const {
+Color ImageSampler::trace(float sx, float sy, uint32_t sample, RandomStream& random, TraceState& state) const {
+  state.camera_sample = sample;
   if (!camera_.has_lens()) return integrator_.radiance(camera_.generate_ray(sx, sy), random, state);
   const float lens_u = random.uniform();
   const float lens_v = random.uniform();
@@ -38,14 +39,14 @@ void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& sta
       const int ix = x + region_.x0, iy = y + region_.y0;
       if (n <= 1) {
         RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(0));
-        film.add(x, y, trace(float(ix) + 0.5f, float(iy) + 0.5f, random, state));
+        film.add(x, y, trace(float(ix) + 0.5f, float(iy) + 0.5f, 0, random, state));
         continue;
       }
       for (int s = 0; s < n; ++s) {
         RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(uint32_t(s)));
         const float sx = float(ix) + (float(s % grid.columns) + random.uniform()) / float(grid.columns);
         const float sy = float(iy) + (float(s / grid.columns) + random.uniform()) / float(grid.rows);
-        film.add(x, y, trace(sx, sy, random, state));
+        film.add(x, y, trace(sx, sy, uint32_t(s), random, state));
       }
     }
 }
@@ -62,7 +63,7 @@ FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
       RandomStream random(settings_.seed, pixel_key(ix, iy), antialias_sample_index(uint32_t(j * columns + i)));
       const float sx = float(ix) + (float(i) + random.uniform()) / float(columns);
       const float sy = float(iy) + (float(j) + random.uniform()) / float(rows);
-      sum += trace(sx, sy, random, state);
+      sum += trace(sx, sy, uint32_t(j * columns + i), random, state);
     }
   return {sum, float(columns * rows)};
 }
@@ -76,7 +77,7 @@ FilmPixel ImageSampler::more_samples(int x, int y, const PixelPass& pass, TraceS
     RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(pass.first + k));
     const float sx = float(ix) + (float(int(k) % grid.columns) + random.uniform()) / float(grid.columns);
     const float sy = float(iy) + (float(int(k) / grid.columns) + random.uniform()) / float(grid.rows);
-    estimate.add(trace(sx, sy, random, state));
+    estimate.add(trace(sx, sy, pass.first + k, random, state));
   }
   return estimate;
 }
@@ -111,7 +112,7 @@ void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, Trac
           // Jittered by up to half a cell either way, as POV-Ray's +J1.
           const float sx = (float(gx) + random.uniform() - 0.5f) / float(cells);
           const float sy = (float(gy) + random.uniform() - 0.5f) / float(cells);
-          sum += trace(sx, sy, random, state);
+          sum += trace(sx, sy, uint32_t(s), random, state);
         }
         known[k] = 1;
         return colours[k] = sum / float(spp);

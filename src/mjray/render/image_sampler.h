@@ -115,8 +115,9 @@ class ImageSampler {
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }
   void first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const;
-  /// The radiance of the camera sample at image position (sx, sy), drawing the lens point first.
-  Color trace(float sx, float sy, RandomStream& random, TraceState& state) const;
+  /// The radiance of camera sample `sample` of its pixel, at image position (sx, sy), drawing
+  /// the lens point first.
+  Color trace(float sx, float sy, uint32_t sample, RandomStream& random, TraceState& state) const;
 
   const Camera& camera_;
   const Integrator& integrator_;

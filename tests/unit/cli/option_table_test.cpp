@@ -30,7 +30,8 @@ const std::vector<Case> kChangesTheImage = {
     {{"--tile-size", "8"}}, {{"--caustics", "1000"}}, {{"--gi", "1000"}},  {{"--crop", "0,0,4,4"}},
     {{"--gamma", "srgb"}},  {{"--bit-depth", "16"}}, {{"--jpeg-quality", "70"}},
     {{"--aperture", "0.1", "--focus-distance", "3"}}, {{"--focus-distance", "3", "--aperture", "0.2"}},
-    {{"--size", "16x12"}},
+    {{"--size", "16x12"}},  {{"--noise-threshold", "0.02"}}, {{"--max-spp", "64", "--noise-threshold", "0.02"}},
+    {{"--caustic-passes", "4", "--caustics", "1000"}},
 };
 
 /// Options that never change an image's bytes: how it is computed, where it goes, what the
@@ -42,6 +43,7 @@ const std::vector<Case> kLeavesTheImage = {
     {{"--quiet"}},        {{"--resume"}},        {{"--watch"}},         {{"--watch", "--port", "9000"}},
     {{"--watch", "--listen", "::1"}}, {{"--unsafe-lua"}}, {{"--allow-read", "/"}}, {{"--lua-memory", "64MiB"}},
     {{"--scene-timeout", "5"}}, {{"--transform-order", "pre"}}, {{"-D", "x=1"}}, {{"--define", "y=2"}},
+    {{"--time-limit", "30"}},
 };
 
 std::string fingerprint_of(const std::vector<std::string>& args) {

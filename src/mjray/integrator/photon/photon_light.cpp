@@ -17,11 +17,13 @@ constexpr int kMaxGatherBounces = 8;  ///< specular bounces of a gather ray befo
 }  // namespace
 
 Color PhotonMappedLight::radiance(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local,
-                                  float weight, RandomStream& random, RayCounters& counters) const {
+                                  float weight, RandomStream& random, TraceState& state) const {
   Color result;
-  if (!maps_.caustic().empty() && !local.kd.is_black())
-    result += local.kd * irradiance_estimate(maps_.caustic(), si.point, frame.n, maps_.caustic_query());
-  if (!maps_.irradiance().empty()) result += final_gather(si, frame, weight, random, counters);
+  // Each camera sample reads its own pass of the caustic map, in turn.
+  const size_t pass = maps_.caustic_passes() > 0 ? state.camera_sample % maps_.caustic_passes() : 0;
+  if (maps_.caustic_passes() > 0 && !maps_.caustic(pass).empty() && !local.kd.is_black())
+    result += local.kd * irradiance_estimate(maps_.caustic(pass), si.point, frame.n, maps_.caustic_query(pass));
+  if (!maps_.irradiance().empty()) result += final_gather(si, frame, weight, random, state.rays);
   return result;
 }
 

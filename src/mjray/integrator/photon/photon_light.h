@@ -20,7 +20,7 @@ class PhotonMappedLight final : public IndirectLight {
       : world_(world), accel_(accel), maps_(maps), settings_(settings) {}
 
   Color radiance(const SurfaceInteraction& si, const ShadingFrame& frame, const LocalShading& local, float weight,
-                 RandomStream& random, RayCounters& counters) const override;
+                 RandomStream& random, TraceState& state) const override;
 
  private:
   /// The light arriving at si from other surfaces, by final gathering.

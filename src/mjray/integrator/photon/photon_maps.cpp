@@ -8,6 +8,7 @@
 #include "mjray/core/available_memory.h"
 #include "mjray/core/error.h"
 #include "mjray/core/parallel_for.h"
+#include "mjray/core/rng.h"
 #include "mjray/core/seconds_since.h"
 #include "mjray/integrator/photon/photon_tracer.h"
 
@@ -71,6 +72,22 @@ std::string share_text(uint64_t machine_bytes, int processes) {
          memory_text(double(machine_bytes)) + ")";
 }
 
+/// Progressive photon mapping's α: the share of photons a search keeps as its area shrinks.
+constexpr double kProgressiveAlpha = 2.0 / 3.0;
+/// The fewest photons a pass's estimate gathers, however small its area.
+constexpr int kMinPassNeighbours = 8;
+
+/// The search area of caustic pass `pass` over the first's: Π_{i=1..pass} (i + α) / (i + 1).
+double caustic_area_share(int pass) {
+  double share = 1;
+  for (int i = 1; i <= pass; ++i) share *= (i + kProgressiveAlpha) / (i + 1);
+  return share;
+}
+
+/// The photons' seed of caustic pass `pass`: the run's own for the first, so that one pass is
+/// the map a run without passes makes.
+uint64_t pass_seed(uint64_t seed, int pass) { return pass == 0 ? seed : mix64(seed ^ mix64(uint64_t(pass))); }
+
 /// The box around the balls photons are aimed at.
 Bounds3 bounds_of(const std::vector<BoundingSphere>& balls) {
   Bounds3 box;
@@ -86,12 +103,12 @@ Bounds3 bounds_of(const std::vector<BoundingSphere>& balls) {
 PhotonMaps::PhotonMaps(const World& world, const Accelerator& accel, const PhotonSettings& settings, uint64_t seed,
                        int threads) {
   // Compute each map: trace its photons, then build its tree.
-  const auto build_map = [&](const PhotonSource& source, PhotonPaths paths, uint64_t count) {
+  const auto build_map = [&](const PhotonSource& source, PhotonPaths paths, uint64_t count, uint64_t map_seed) {
     auto start = Clock::now();
     const MapBudget budget = map_budget(settings);
     TracedPhotons traced;
     try {
-      traced = trace_photons(world, accel, source, paths, count, seed, threads,
+      traced = trace_photons(world, accel, source, paths, count, map_seed, threads,
                              budget.bytes ? budget.bytes / kPeakBytesPerPhoton : UINT64_MAX);
     } catch (const PhotonMapTooLarge& e) {
       const std::string option = paths == PhotonPaths::kCaustic ? "--caustics " : "--gi ";
@@ -111,19 +128,28 @@ PhotonMaps::PhotonMaps(const World& world, const Accelerator& accel, const Photo
   if (settings.caustics()) {
     // Caustics are as large as the objects that focus them, wherever stray photons land.
     std::vector<BoundingSphere> targets = specular_targets(world);
-    caustic_query_ = query_for(settings.caustic_neighbours, bounds_of(targets), settings.caustic_radius_share);
-    caustic_ = build_map(PhotonSource(world.lights, std::move(targets)), PhotonPaths::kCaustic, settings.caustic_photons);
-    statistics_.caustic_emitted = settings.caustic_photons;
-    statistics_.caustic_stored = caustic_.size();
+    const DensityQuery first = query_for(settings.caustic_neighbours, bounds_of(targets), settings.caustic_radius_share);
+    const PhotonSource source(world.lights, std::move(targets));
+    for (int pass = 0; pass < std::max(1, settings.caustic_passes); ++pass) {
+      // Each pass's photons are numbered apart (pass 0's as a single map's), and searched over
+      // an area that shrinks as progressive photon mapping's: r'² = r² (i + α) / (i + 1).
+      const double area = caustic_area_share(pass);
+      caustic_query_.push_back({std::max(kMinPassNeighbours, int(std::lround(first.neighbours * area))),
+                                float(first.max_radius * std::sqrt(area))});
+      caustic_.push_back(build_map(source, PhotonPaths::kCaustic, settings.caustic_photons, pass_seed(seed, pass)));
+      statistics_.caustic_emitted += settings.caustic_photons;
+      statistics_.caustic_stored += caustic_.back().size();
+    }
   }
   if (settings.global_illumination()) {
-    global_ = build_map(PhotonSource(world.lights), PhotonPaths::kGlobal, settings.global_photons);
+    global_ = build_map(PhotonSource(world.lights), PhotonPaths::kGlobal, settings.global_photons, seed);
     statistics_.global_emitted = settings.global_photons;
     statistics_.global_stored = global_.size();
   }
   global_query_ = query_for(settings.global_neighbours, global_.bounds(), settings.global_radius_share);
   if (!global_.empty()) precompute_irradiance(std::max(1, settings.irradiance_stride), threads);
-  statistics_.memory_bytes = caustic_.memory_bytes() + global_.memory_bytes() + irradiance_.memory_bytes();
+  statistics_.memory_bytes = global_.memory_bytes() + irradiance_.memory_bytes();
+  for (const KdTree<Photon>& pass : caustic_) statistics_.memory_bytes += pass.memory_bytes();
 }
 
 void PhotonMaps::precompute_irradiance(int stride, int threads) {

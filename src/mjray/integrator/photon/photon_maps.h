@@ -2,6 +2,7 @@
 /// The photon maps of one job: built once before the render, read by every pixel.
 
 #include <cstdint>
+#include <vector>
 
 #include "mjray/accel/accelerator.h"
 #include "mjray/integrator/photon/density_estimate.h"
@@ -22,20 +23,25 @@ class PhotonMaps {
  public:
   PhotonMaps(const World& world, const Accelerator& accel, const PhotonSettings& settings, uint64_t seed, int threads);
 
-  const KdTree<Photon>& caustic() const { return caustic_; }
+  /// The caustic map of pass `pass` (0 to caustic_passes() − 1) and how it is read: each pass
+  /// of fresh photons, over a smaller radius than the one before.
+  const KdTree<Photon>& caustic(size_t pass = 0) const { return caustic_[pass]; }
+  const DensityQuery& caustic_query(size_t pass = 0) const { return caustic_query_[pass]; }
+  size_t caustic_passes() const { return caustic_.size(); }
   const KdTree<Photon>& global() const { return global_; }
   const KdTree<IrradianceSample>& irradiance() const { return irradiance_; }
-  /// How the caustic map and the global map are read.
-  const DensityQuery& caustic_query() const { return caustic_query_; }
+  /// How the global map is read.
   const DensityQuery& global_query() const { return global_query_; }
   const PhotonStatistics& statistics() const { return statistics_; }
 
  private:
   void precompute_irradiance(int stride, int threads);
 
-  KdTree<Photon> caustic_, global_;
+  std::vector<KdTree<Photon>> caustic_;
+  std::vector<DensityQuery> caustic_query_;
+  KdTree<Photon> global_;
   KdTree<IrradianceSample> irradiance_;
-  DensityQuery caustic_query_, global_query_;
+  DensityQuery global_query_;
   PhotonStatistics statistics_;
 };
 

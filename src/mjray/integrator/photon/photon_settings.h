@@ -7,7 +7,10 @@ namespace mjray {
 
 /// Photon counts (0 = off) and the constants of the estimates.
 struct PhotonSettings {
-  uint64_t caustic_photons = 0;  ///< --caustics N: photons aimed at objects with specular lobes
+  uint64_t caustic_photons = 0;  ///< --caustics N: photons aimed at objects with specular lobes, per pass
+  /// --caustic-passes K: caustic maps of fresh photons, each searched over a smaller radius
+  /// than the last (progressive photon mapping); camera sample s of a pixel reads map s mod K.
+  int caustic_passes = 1;
   uint64_t global_photons = 0;   ///< --gi N: photons in every direction, for the global map
   int caustic_neighbours = 100;  ///< k of the caustic map's density estimate
   int global_neighbours = 100;   ///< k of the global map's irradiance estimates
