@@ -1,5 +1,6 @@
 #include "job_images.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <system_error>
 
@@ -13,6 +14,8 @@ namespace mjray {
 namespace {
 
 constexpr const char* kFingerprintKey = "mjray job";
+/// Why a partial image stopped and how far it got.
+constexpr const char* kStoppedKey = "mjray stopped";
 
 /// The fingerprint a finished image records, or "" when it records none.
 std::string recorded_fingerprint(const std::filesystem::path& image) {
@@ -68,12 +71,27 @@ void write_finished_image(const Image& image, const std::filesystem::path& path,
   }
 }
 
-void write_interrupted_image(const RenderCheckpoint& checkpoint, const std::filesystem::path& path,
-                             const EncodeOptions& encoding) {
+std::string progress_reached(const RenderCheckpoint& checkpoint, bool targets_noise, int passes) {
+  if (checkpoint.antialias_pass == 0) {
+    const auto done = std::count(checkpoint.tile_done.begin(), checkpoint.tile_done.end(), uint8_t(1));
+    return "first pass, " + std::to_string(done) + " of " + std::to_string(checkpoint.tile_done.size()) + " tiles";
+  }
+  const std::string pass = std::to_string(checkpoint.antialias_pass) + " of " + std::to_string(passes);
+  if (!targets_noise) return "anti-aliasing pass " + pass;
+  if (checkpoint.pass_pixels.empty()) return "noise pass " + pass + ", before its pixels were chosen";
+  const auto left = std::count(checkpoint.pass_done.begin(), checkpoint.pass_done.end(), uint8_t(0));
+  return "noise pass " + pass + ", " + std::to_string(left) + " of its " + std::to_string(checkpoint.pass_pixels.size()) +
+         " pixels to refine";
+}
+
+void write_stopped_image(const RenderCheckpoint& checkpoint, const std::filesystem::path& path, EncodeOptions encoding,
+                         StopReason reason, const std::string& reached) {
+  const char* why = reason == StopReason::kTimeLimit ? "time limit" : "interrupted";
+  encoding.metadata.emplace_back(kStoppedKey, std::string(why) + " in the " + reached);
   write_image(checkpoint.film.resolve(), path, encoding);
   write_checkpoint(checkpoint, checkpoint_path(path));
-  std::fprintf(stderr, "mjray: interrupted: wrote the partial image %s and its state; run again with --resume to finish\n",
-               path.string().c_str());
+  std::fprintf(stderr, "mjray: %s: wrote the partial image %s (%s) and its state; run again with --resume to %s\n", why,
+               path.string().c_str(), reached.c_str(), reason == StopReason::kTimeLimit ? "go on" : "finish");
 }
 
 }  // namespace mjray

@@ -30,9 +30,17 @@ ResumePlan plan_resume(const std::filesystem::path& image, const std::string& fi
 void write_finished_image(const Image& image, const std::filesystem::path& path, EncodeOptions encoding,
                           const std::string& fingerprint);
 
-/// Writes the partial image (recording no fingerprint) and `checkpoint` (with its
-/// fingerprint) beside it, and tells the user how to finish. Throws OutputError.
-void write_interrupted_image(const RenderCheckpoint& checkpoint, const std::filesystem::path& path,
-                             const EncodeOptions& encoding);
+/// Why a render stopped before it finished.
+enum class StopReason { kInterrupted, kTimeLimit };
+
+/// How far a stopped render got: "first pass, 40 of 920 tiles", "noise pass 3 of 8, 12034
+/// pixels to refine", "anti-aliasing pass 2".
+std::string progress_reached(const RenderCheckpoint& checkpoint, bool targets_noise, int passes);
+
+/// Writes the partial image (recording no fingerprint, and in its metadata why it stopped and
+/// `reached`) and `checkpoint` (with its fingerprint) beside it, and tells the user how to
+/// go on. Throws OutputError.
+void write_stopped_image(const RenderCheckpoint& checkpoint, const std::filesystem::path& path, EncodeOptions encoding,
+                         StopReason reason, const std::string& reached);
 
 }  // namespace mjray

@@ -80,13 +80,16 @@ RenderOutcome render_job(const PreparedJob& job, const std::optional<RenderCheck
 void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheckpoint>& state, const JobOptions& options,
                          const std::string& fingerprint, const LocalRunOptions& run, JobStatistics& stats,
                          const TileExecutorFactory& executor) {
-  // Compute the image, watched (progress, snapshots, Ctrl-C), resuming from the saved state.
+  // Compute the image, watched (progress, snapshots, Ctrl-C, --time-limit), resuming from the saved state.
+  bool timed_out = false;
   RenderOutcome outcome = render_job(job, state, options.render, [&](ImageRender& render) {
     const PixelRect& traced = render.region();
-    RenderWatcher watcher(render, job.output(), {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding,
-                                                 options.render, traced.x1 - traced.x0, traced.y1 - traced.y0, run.frame});
+    RenderWatcher watcher(render, job.output(),
+                          {run.quiet, run.snapshot_interval_seconds, options.outputs.encoding, options.render,
+                           traced.x1 - traced.x0, traced.y1 - traced.y0, run.frame, run.deadline});
     const bool finished = run.run_render ? run.run_render(job, render) : render.run();
     if (finished) watcher.finish();
+    timed_out = watcher.timed_out();
     return finished;
   }, executor);
   stats.render = outcome.stats;
@@ -95,7 +98,11 @@ void render_prepared_job(const PreparedJob& job, const std::optional<RenderCheck
   if (!outcome.finished) {
     // Keep what is done: the partial image and the state to resume from.
     outcome.checkpoint.fingerprint = fingerprint;
-    write_interrupted_image(outcome.checkpoint, job.output(), options.outputs.encoding);
+    const StopReason reason = timed_out ? StopReason::kTimeLimit : StopReason::kInterrupted;
+    const std::string reached =
+        progress_reached(outcome.checkpoint, options.render.targets_noise(), pixel_pass_count(options.render));
+    write_stopped_image(outcome.checkpoint, job.output(), options.outputs.encoding, reason, reached);
+    if (timed_out) throw TimeLimitReached{};
     throw Interrupted{};
   }
   EncodeOptions encoding = options.outputs.encoding;

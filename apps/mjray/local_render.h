@@ -3,6 +3,7 @@
 /// keeping the partial image and its state, --resume finishing it. The tiles run on this
 /// process's threads or on any other TileExecutor a driver gives.
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -36,6 +37,8 @@ struct LocalRunOptions {
   /// Runs the built job's render and returns whether it finished; empty = render.run(). The
   /// watch driver's adds a coarse preview and the live page, and throws to drop a stale render.
   std::function<bool(const PreparedJob& job, ImageRender& render)> run_render = nullptr;
+  /// --time-limit: when the run must stop (none without it).
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 /// What the command line's reporting options ask of each job's render.
@@ -50,6 +53,10 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// Thrown when the user interrupted a render (the partial image and state are written);
 /// the program exits 130.
 struct Interrupted {};
+
+/// Thrown when --time-limit stopped a render (the partial image and state are written): the
+/// run renders nothing more and exits 0.
+struct TimeLimitReached {};
 
 /// Prepares and renders job `index` of `scene`, writes its image (recording the job's
 /// fingerprint) and returns its statistics; nothing when --resume keeps the image. Throws

@@ -41,13 +41,29 @@ void render_locally(const RunOptions& options) {
   // Compute each image, then what the frames add up to and the video.
   const ReportOptions& report = options.report;
   const bool animation = scene.jobs.size() > 1;
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  if (report.time_limit_seconds > 0)
+    deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(report.time_limit_seconds));
   std::vector<JobStatistics> statistics;
-  for (const size_t i : plan.jobs) {
-    LocalRunOptions run = local_run_options(report);
-    if (animation) run.frame = "frame " + std::to_string(i + 1) + "/" + std::to_string(scene.jobs.size());
-    if (auto stats = render_job_locally(scene, i, options.job, plan.fingerprints, run, parse_seconds))
-      statistics.push_back(*stats);
-    if (report.stats_json) write_statistics_json(statistics, *report.stats_json);
+  size_t jobs_begun = 0;
+  try {
+    for (const size_t i : plan.jobs) {
+      LocalRunOptions run = local_run_options(report);
+      run.deadline = deadline;
+      if (animation) run.frame = "frame " + std::to_string(i + 1) + "/" + std::to_string(scene.jobs.size());
+      if (deadline && std::chrono::steady_clock::now() >= *deadline) throw TimeLimitReached{};
+      ++jobs_begun;
+      if (auto stats = render_job_locally(scene, i, options.job, plan.fingerprints, run, parse_seconds))
+        statistics.push_back(*stats);
+      if (report.stats_json) write_statistics_json(statistics, *report.stats_json);
+    }
+  } catch (const TimeLimitReached&) {
+    // What is done stays; the rest waits for --resume.
+    if (!report.quiet && jobs_begun < plan.jobs.size())
+      std::fprintf(stderr, "mjray: time limit: %zu of %zu images not begun%s\n", plan.jobs.size() - jobs_begun,
+                   plan.jobs.size(), report.video ? "; no video" : "");
+    return;
   }
   if (animation && (report.print_stats || !report.quiet))
     std::fputs(animation_summary(statistics, plan.jobs.size() - statistics.size(), report.print_stats).c_str(), stderr);

@@ -8,13 +8,16 @@
 namespace mjray {
 
 ProgressEstimate::ProgressEstimate(int width, int height, const RenderSettings& settings)
-    : first_pass_samples_(double(width) * double(height) * std::max(1, settings.samples_per_pixel)),
+    : first_pass_samples_(double(width) * double(height) * std::max(1, settings.first_pass_samples())),
       // Subdivision needs no anti-aliasing pass: all its work is in the first.
       samples_per_pixel_(settings.antialias_samples > 0 && !settings.subdivides()
                              ? double(settings.antialias_samples) * settings.antialias_samples *
                                    std::max(1, settings.samples_per_pixel)
                              : 0),
-      max_passes_(settings.antialias_max_passes) {}
+      targets_noise_(settings.targets_noise()),
+      pixels_(double(width) * double(height)),
+      noise_first_samples_(std::max(1, settings.first_pass_samples())),
+      max_passes_(pixel_pass_count(settings)) {}
 
 void ProgressEstimate::update(const RenderProgress& progress, double elapsed) {
   // A pass's plan shows as growth of the total (two plans between ticks merge into one).
@@ -25,6 +28,11 @@ void ProgressEstimate::update(const RenderProgress& progress, double elapsed) {
              double(progress.total) > first_pass_samples_) {
     // A resumed pass: planned before this run started.
     pass_pixels_.push_back((double(progress.total) - first_pass_samples_) / samples_per_pixel_);
+    planned_pass_ = progress.antialias_pass;
+  }
+  // A noise pass shows its plan as the pixels it refines.
+  if (targets_noise_ && progress.antialias_pass > planned_pass_ && progress.pixels_refining > 0) {
+    pass_pixels_.push_back(double(progress.pixels_refining));
     planned_pass_ = progress.antialias_pass;
   }
   // Where each phase began in this run, to measure its own rate.
@@ -38,7 +46,25 @@ void ProgressEstimate::update(const RenderProgress& progress, double elapsed) {
   elapsed_ = elapsed;
 }
 
+double ProgressEstimate::unplanned_noise_samples() const {
+  if (last_.antialias_pass > max_passes_) return 0;
+  // Until a pass is planned, guess the share of pixels the first refines.
+  double pixels = pass_pixels_.empty() ? pixels_ * kFirstNoisePassShare : pass_pixels_.back();
+  double ratio = kNoisePassRatio;
+  if (pass_pixels_.size() >= 2 && pass_pixels_[pass_pixels_.size() - 2] > 0)
+    ratio = std::min(1.0, pixels / pass_pixels_[pass_pixels_.size() - 2]);
+  // Pass k adds first · 2^(k−1) samples to each pixel it refines.
+  const int planned = pass_pixels_.empty() ? 0 : planned_pass_;
+  double samples = 0;
+  for (int k = planned + 1; k <= max_passes_; ++k) {
+    if (k > 1 || !pass_pixels_.empty()) pixels *= ratio;
+    samples += pixels * noise_first_samples_ * std::ldexp(1.0, k - 1);
+  }
+  return samples;
+}
+
 double ProgressEstimate::unplanned_samples() const {
+  if (targets_noise_) return unplanned_noise_samples();
   if (samples_per_pixel_ == 0 || last_.antialias_pass > max_passes_) return 0;
   // The pass to extrapolate from and how it shrinks.
   double pixels = 0, ratio = kLaterPassRatio;
@@ -82,7 +108,15 @@ ProgressView ProgressEstimate::view() const {
   if (rate_first > 0 && rate_aa > 0)
     v.eta_seconds = (first_pass_samples_ - first_done) / rate_first + std::max(0.0, aa_total - aa_done) / rate_aa;
   const int pass = last_.antialias_pass;
-  if (pass > 0 && pass <= max_passes_ && samples_per_pixel_ > 0) {
+  if (targets_noise_ && pass > 0) {
+    v.choosing_pixels = pass <= max_passes_ && last_.pixels_refining == 0;
+    v.antialias_pass = std::min(pass, max_passes_);
+    // Between passes, the last plan's pixels are still the ones not known clean.
+    const double refining = last_.pixels_refining > 0 ? double(last_.pixels_refining)
+                            : pass_pixels_.empty()     ? pixels_
+                                                       : pass_pixels_.back();
+    v.clean_fraction = pixels_ > 0 ? 1 - refining / pixels_ : 1;
+  } else if (pass > 0 && pass <= max_passes_ && samples_per_pixel_ > 0) {
     v.choosing_pixels = pass != planned_pass_;
     v.antialias_pass = planned_pass_;
   }

@@ -1,7 +1,7 @@
 #pragma once
-/// How much of a render is done and how long the rest will take, counting the anti-aliasing
-/// work before it is planned: estimated from the share of bad pixels, corrected as each pass
-/// is planned.
+/// How much of a render is done and how long the rest will take, counting the work of passes
+/// before they are planned: -a's from the share of bad pixels, --noise-threshold's from how
+/// the set of noisy pixels shrinks, each corrected as every pass is planned.
 
 #include <optional>
 #include <vector>
@@ -19,6 +19,8 @@ struct ProgressView {
   /// planned yet); with choosing_pixels, the next pass is being planned.
   int antialias_pass = 0;
   bool choosing_pixels = false;
+  /// With --noise-threshold, after the first pass: the share of pixels clean (or at --max-spp).
+  std::optional<double> clean_fraction;
 };
 
 /// Turns the counters of one ImageRender into a ProgressView.
@@ -36,15 +38,25 @@ class ProgressEstimate {
 
   /// Later passes are assumed to shrink by this factor per pass until two are known.
   static constexpr double kLaterPassRatio = 0.25;
+  /// Noise passes are assumed to refine this share of the pixels in the first, and each this
+  /// share of the last one's pixels, until two are known (typical of the feature scenes; the
+  /// passes end at --max-spp, so the sum is finite whatever the share).
+  static constexpr double kFirstNoisePassShare = 0.25;
+  static constexpr double kNoisePassRatio = 0.75;
   /// Seconds of anti-aliasing before its own rate is trusted.
   static constexpr double kRateSettleSeconds = 0.5;
 
  private:
   /// Anti-aliasing samples expected beyond those already planned.
   double unplanned_samples() const;
+  /// The same for the noise target's passes.
+  double unplanned_noise_samples() const;
 
   double first_pass_samples_;
   double samples_per_pixel_;  // 0 without anti-aliasing
+  bool targets_noise_;
+  double pixels_;             // traced
+  double noise_first_samples_;  // per pixel in the first pass under --noise-threshold
   int max_passes_;
   double first_pass_share_ = 0;
   RenderProgress last_;

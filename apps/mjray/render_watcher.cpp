@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -62,6 +63,10 @@ void RenderWatcher::loop() {
       if (wake_.wait_for(lock, std::chrono::milliseconds(50), [&] { return done_; })) break;
     }
     if (interrupted()) render_.request_stop();
+    if (options_.deadline && Clock::now() >= *options_.deadline && !timed_out_) {
+      timed_out_ = true;
+      render_.request_stop();
+    }
     const double elapsed = seconds_since(start);
     estimate_.update(render_.progress(), elapsed);
     // During the first pass, how much anti-aliasing the finished tiles will need.
@@ -97,12 +102,19 @@ void RenderWatcher::report(double elapsed, bool final) {
   if (options_.quiet) return;
   const bool complete = final && finished_;
   const ProgressView v = estimate_.view();
-  const double fraction = complete ? 1.0 : v.fraction;
+  // The bar never goes back, though a pass may find more work than was estimated.
+  shown_fraction_ = std::max(shown_fraction_, v.fraction);
+  const double fraction = complete ? 1.0 : shown_fraction_;
   const double eta = complete ? 0 : v.eta_seconds;
   const double rays_per_second = elapsed > 0 ? double(render_.progress().rays) / elapsed : 0;
   const std::string frame = options_.frame.empty() ? "" : options_.frame + ": ";
   std::string stage;
-  if (!complete && v.choosing_pixels) stage = " (anti-aliasing: choosing pixels)";
+  if (!complete && v.clean_fraction) {
+    char clean[64];
+    std::snprintf(clean, sizeof clean, "%.0f%% of pixels clean", 100 * std::floor(*v.clean_fraction * 100) / 100);
+    stage = v.choosing_pixels ? " (noise target: choosing pixels, " + std::string(clean) + ")"
+                              : " (noise pass " + std::to_string(v.antialias_pass) + ", " + clean + ")";
+  } else if (!complete && v.choosing_pixels) stage = " (anti-aliasing: choosing pixels)";
   else if (!complete && v.antialias_pass > 0) stage = " (anti-aliasing pass " + std::to_string(v.antialias_pass) + ")";
   if (terminal_) {
     // A live bar rewritten in place; \033[K clears what a longer line left behind.

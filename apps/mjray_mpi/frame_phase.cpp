@@ -52,7 +52,9 @@ void write_frame(const RunSetup& setup, FrameDoneMessage done, StatisticsLog& lo
   if (!done.finished) {
     RenderCheckpoint checkpoint = decode_checkpoint(done.checkpoint, path);
     checkpoint.fingerprint = fingerprint;
-    write_interrupted_image(checkpoint, path, setup.options.outputs.encoding);
+    const RenderSettings& render = setup.options.render;
+    write_stopped_image(checkpoint, path, setup.options.outputs.encoding, StopReason::kInterrupted,
+                        progress_reached(checkpoint, render.targets_noise(), pixel_pass_count(render)));
     return;
   }
   write_finished_image(done.image, path, setup.options.outputs.encoding, fingerprint);

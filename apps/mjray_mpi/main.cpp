@@ -76,6 +76,9 @@ int main(int argc, char** argv) {
   try {
     cl = parse_command_line(std::vector<std::string>(argv + 1, argv + argc), own);
     if (cl.run.report.watch) throw UsageError("--watch: mjray-mpi does not serve the live preview; run mjray --watch instead");
+    if (cl.run.report.time_limit_seconds > 0)
+      throw UsageError("--time-limit: mjray-mpi renders to the end (its ranks would stop at different points); run "
+                       "mjray --time-limit, or stop mjray-mpi with Ctrl-C and --resume");
   } catch (const UsageError& e) {
     if (!root) return 0;
     std::fprintf(stderr, "mjray: %s\n(run 'mjray-mpi --help' for the options)\n", e.what());

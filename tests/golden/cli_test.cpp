@@ -37,6 +37,11 @@ std::string quoted(const std::string& text) {
   return out + "'";
 }
 
+std::vector<std::string> plus(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 // A tiny lit sphere; `output` is a Lua expression naming the image.
 std::string tiny_scene(const std::string& output = "'out.png'", int width = 8, int height = 6) {
   return "root = gr.node('root')\n"
@@ -160,6 +165,15 @@ TEST_F(GoldenCli, BadCommandLinesExitTwo) {
   r = run({"--scene-timeout", "-1", scene.string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "mjray: --scene-timeout expects a number of seconds from 0 (no limit) to 1000000, got '-1'\n" + hint);
+  r = run({"-a", "2", "--noise-threshold", "0.01", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("mjray: --noise-threshold and -a cannot be used together", 0), 0u) << r.err;
+  r = run({"--watch", "--time-limit", "10", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("mjray: --time-limit and --watch cannot be used together", 0), 0u) << r.err;
+  r = run({"--noise-threshold", "2", scene.string()});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "mjray: --noise-threshold expects a number in (0, 1], or 0 for off, got '2'\n" + hint);
   EXPECT_EQ(listing(dir_), "scene.lua");  // nothing rendered
 }
 
@@ -193,6 +207,29 @@ TEST_F(GoldenCli, AScriptThatReadsTheClockIsNotResumed) {
   EXPECT_EQ(r.err, "mjray: error: " + (dir_ / "scene.lua").string() + ": --resume: the script reads the clock (os.time at " +
                        (dir_ / "scene.lua").string() + ":1), so the scene it describes may differ from the one the "
                        "interrupted run rendered; render without --resume\n");
+}
+
+TEST_F(GoldenCli, TimeLimitWritesWhatIsDoneAndResumeFinishesTheSameImage) {
+  // Some seconds of work on one thread, stopped after a quarter of a second.
+  const auto scene = write("scene.lua", tiny_scene("'out.png'", 640, 480));
+  const std::vector<std::string> options = {"-j", "1", "--noise-threshold", "0.01", scene.string()};
+  RunResult r = run(plus({"--quiet", "--output", (dir_ / "whole.png").string()}, options));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run(plus({"--time-limit", "0.25"}, options));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("mjray: time limit: wrote the partial image " + (dir_ / "out.png").string() + " (first pass, "),
+            std::string::npos) << r.err;
+  ASSERT_TRUE(fs::exists(dir_ / "out.png.mjray-state"));
+  std::string stopped;
+  for (const auto& [key, value] : read_image_metadata(dir_ / "out.png"))
+    if (key == "mjray stopped") stopped = value;
+  EXPECT_EQ(stopped.rfind("time limit in the first pass, ", 0), 0u) << stopped;
+  EXPECT_NE(read_file(dir_ / "out.png"), read_file(dir_ / "whole.png"));
+  // --resume goes on from the state to the image an unlimited run makes.
+  r = run(plus({"--quiet", "--resume"}, options));
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_file(dir_ / "out.png"), read_file(dir_ / "whole.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "out.png.mjray-state"));
 }
 
 TEST_F(GoldenCli, HelpAndVersionExitZero) {

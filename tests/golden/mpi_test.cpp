@@ -188,6 +188,31 @@ TEST_F(MpiRender, PhotonMapsAreTheSameBytesForOneAndTwoRanks) {
   }
 }
 
+TEST_F(MpiRender, ProgressiveCausticsUnderANoiseTargetAreTheSameBytesForTwoAndThreeRanks) {
+  // The noise passes' pixels are shared among the ranks, each sample reading its caustic pass.
+  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
+  const std::vector<std::string> options = {"--caustics", "5000", "--caustic-passes", "4", "--noise-threshold", "0.05",
+                                            "--max-spp", "64", "--seed", "3"};
+  ASSERT_EQ(run(mjray(plus(plus({"--quiet"}, options), {"--output", (dir_ / "ref.png").string(), scene.string()}))), 0);
+  const std::string reference = read_file(dir_ / "ref.png");
+  ASSERT_FALSE(reference.empty());
+  for (const int ranks : {2, 3}) {
+    const auto out = dir_ / ("np" + std::to_string(ranks) + ".png");
+    const auto log = dir_ / "log.txt";
+    ASSERT_EQ(run(plus(plus(mpirun(ranks), {"--quiet", "-j", "1"}), plus(options, {"--output", out.string(), scene.string()})),
+                  log), 0) << read_file(log);
+    EXPECT_EQ(read_file(out), reference) << ranks << " ranks";
+  }
+}
+
+TEST_F(MpiRender, TimeLimitIsRefusedWithTheUsageExitCode) {
+  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
+  const auto log = dir_ / "log.txt";
+  EXPECT_EQ(run(plus(mpirun(2), {"--time-limit", "5", scene.string()}), log), 2);
+  EXPECT_NE(read_file(log).find("mjray: --time-limit: mjray-mpi renders to the end"), std::string::npos) << read_file(log);
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "glass.png"));
+}
+
 TEST_F(MpiRender, RanksOnOneHostEachTakeTheirShareOfItsMemoryForPhotonMaps) {
   // Inside a closed matte room every photon is stored, a few times over: a billion of them
   // would need more memory than a machine has. The message names each rank's share.

@@ -89,6 +89,44 @@ TEST(GoldenPhotons, StopThenResumeGivesTheSameImage) {
   }
 }
 
+/// Progressive caustics under a noise target: passes of photons and passes of samples.
+JobOptions progressive_options(int threads) {
+  JobOptions o = photon_options(threads);
+  o.photons.caustic_passes = 4;
+  o.render.noise_threshold = 0.05f;
+  o.render.max_samples_per_pixel = 64;
+  return o;
+}
+
+TEST(GoldenPhotons, ProgressiveCausticsUnderANoiseTargetAreIdenticalForAnyThreadCountAndResume) {
+  RenderStats stats;
+  const Image reference = test::TestJob(caustic_room(40), progressive_options(1)).render(&stats);
+  EXPECT_GE(stats.antialias_passes, 2);  // the noise target refined some pixels twice or more
+  EXPECT_GT(stats.pixels_supersampled, 0u);
+  EXPECT_LT(stats.pixels_supersampled, 40u * 40u * 2);
+  for (const int threads : {2, 3})
+    EXPECT_EQ(test::TestJob(caustic_room(40), progressive_options(threads)).render().pixels(), reference.pixels())
+        << threads << " threads";
+  JobOptions one_pass = progressive_options(2);
+  one_pass.photons.caustic_passes = 1;
+  EXPECT_NE(test::TestJob(caustic_room(40), one_pass).render().pixels(), reference.pixels());
+  // Stopped in the first pass, and in the noise passes, then resumed on other threads.
+  for (const auto& [tiles, chunks] : {std::pair{5, -1}, std::pair{-1, 1}, std::pair{-1, 2}}) {
+    const test::TestJob first_job(caustic_room(40), progressive_options(2));
+    const PreparedJob& a = first_job.prepared();
+    ImageRender first(a.camera(), 40, 40, a.integrator(), progressive_options(2).render);
+    first.stop_after_tiles(tiles);
+    first.stop_after_pixel_chunks(chunks);
+    ASSERT_FALSE(first.run()) << tiles << " " << chunks;
+    const test::TestJob second_job(caustic_room(40), progressive_options(3));
+    const PreparedJob& b = second_job.prepared();
+    ImageRender second(b.camera(), 40, 40, b.integrator(), progressive_options(3).render);
+    second.resume_from(first.checkpoint());
+    ASSERT_TRUE(second.run());
+    EXPECT_EQ(second.image().pixels(), reference.pixels()) << "stopped after " << tiles << " tiles, " << chunks << " chunks";
+  }
+}
+
 TEST(GoldenPhotons, FingerprintNamesThePhotonCounts) {
   const SceneDescription scene = test::single_job_scene(caustic_room(8));
   JobOptions options;

@@ -33,6 +33,7 @@ Image TestJob::render(RenderStats* stats) const {
 Color TestJob::radiance(const Ray& ray, RayCounters* counters, uint64_t sample) const {
   RandomStream random(0, 0, sample);
   TraceState state;
+  state.camera_sample = uint32_t(sample);
   const Color c = prepared_->integrator().radiance(ray, random, state);
   if (counters) *counters = state.rays;
   return c;

@@ -401,6 +401,9 @@ std::vector<std::string> resolve_options(RunOptions& options) {
   if (render.targets_noise() && render.antialias_samples > 0)
     throw UsageError("--noise-threshold and -a cannot be used together: -a is the report's anti-aliasing of bad pixels, "
                      "--noise-threshold samples every pixel until it is clean; choose one");
+  if (options.report.watch && options.report.time_limit_seconds > 0)
+    throw UsageError("--time-limit and --watch cannot be used together: the live preview renders each change until it is "
+                     "done or the scene changes again");
   if (!render.targets_noise() && render.max_samples_per_pixel != RenderSettings{}.max_samples_per_pixel)
     warnings.push_back("--max-spp has no effect without --noise-threshold");
   // Compute the accelerator: --accel wins, then -o, then -g.

@@ -24,17 +24,6 @@ uint64_t antialias_samples(const SamplingSettings& s) {
   return uint64_t(s.antialias_samples) * uint64_t(s.antialias_samples) * uint64_t(std::max(1, s.samples_per_pixel));
 }
 
-/// Passes after the first: -a's anti-aliasing passes, or the noise target's, each doubling the
-/// samples of the pixels it refines, up to --max-spp.
-int pixel_pass_count(const SamplingSettings& s) {
-  if (s.targets_noise()) {
-    int passes = 0;
-    for (uint64_t total = first_pass_samples(s); total < uint64_t(s.max_samples_per_pixel); total *= 2) ++passes;
-    return passes;
-  }
-  return s.antialias_samples > 0 && !s.subdivides() ? s.antialias_max_passes : 0;
-}
-
 /// What pass `k` (1-based) after the first computes for each pixel it takes.
 PixelPass pixel_pass(const SamplingSettings& s, int k) {
   if (!s.targets_noise()) return {};
@@ -44,6 +33,15 @@ PixelPass pixel_pass(const SamplingSettings& s, int k) {
 }
 
 }  // namespace
+
+int pixel_pass_count(const SamplingSettings& s) {
+  if (s.targets_noise()) {
+    int passes = 0;
+    for (uint64_t total = first_pass_samples(s); total < uint64_t(s.max_samples_per_pixel); total *= 2) ++passes;
+    return passes;
+  }
+  return s.antialias_samples > 0 && !s.subdivides() ? s.antialias_max_passes : 0;
+}
 
 PixelRect rendered_region(int width, int height, const RenderSettings& settings) {
   if (!settings.crop) return {0, 0, width, height};
@@ -92,6 +90,7 @@ void ImageRender::resume_from(const RenderCheckpoint& c) {
   pass_pixels_ = c.pass_pixels;
   pass_done_ = c.pass_done;
   antialias_pass_ = c.antialias_pass;
+  if (settings_.targets_noise()) pixels_refining_ = pass_pixels_.size();
   uint64_t done = 0;
   for (int t = 0; t < layout_.count(); ++t) {
     tile_done_[size_t(t)] = c.tile_done[size_t(t)];
@@ -131,6 +130,7 @@ bool ImageRender::plan_pass() {
   if (pixels.empty()) return false;
   pass_pixels_.assign(pixels.begin(), pixels.end());
   pass_done_.assign(pixels.size(), 0);
+  if (settings_.targets_noise()) pixels_refining_ = pixels.size();
   return true;
 }
 
@@ -165,12 +165,14 @@ bool ImageRender::run_pixel_passes() {
       }
       pixels_supersampled_ += chunk.pixels.size();
       done_ += chunk.pixels.size() * samples_per_pixel;
+      if (++chunks_finished_ == stop_after_chunks_) stop_.request_stop();
     });
     if (!finished) return false;
     // The plan and the pass number change together, so a checkpoint never sees one without the other.
     std::lock_guard lock(film_mutex_);
     pass_pixels_.clear();
     pass_done_.clear();
+    pixels_refining_ = 0;
     ++antialias_passes_run_;
     ++antialias_pass_;
   }
@@ -179,7 +181,7 @@ bool ImageRender::run_pixel_passes() {
 }
 
 RenderProgress ImageRender::progress() const {
-  return {done_.load(), total_.load(), workers_->rays_published(), antialias_pass_};
+  return {done_.load(), total_.load(), workers_->rays_published(), antialias_pass_, pixels_refining_.load()};
 }
 
 Image ImageRender::snapshot() const {

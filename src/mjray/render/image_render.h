@@ -36,6 +36,10 @@ struct RenderSettings : SamplingSettings {
 /// whole image's render.
 PixelRect rendered_region(int width, int height, const RenderSettings& settings);
 
+/// The passes after the first that a render may run: -a's anti-aliasing passes, or the noise
+/// target's, each doubling the samples of the pixels it refines, up to --max-spp.
+int pixel_pass_count(const SamplingSettings& settings);
+
 /// What the render did.
 struct RenderStats {
   RayCounters rays;
@@ -52,6 +56,9 @@ struct RenderProgress {
   uint64_t total = 0;
   uint64_t rays = 0;       ///< rays of every kind cast so far in this run (updated per tile)
   int antialias_pass = 0;  ///< 0 during the first pass
+  /// With --noise-threshold, the pixels the pass under way refines (0 in the first pass and
+  /// while a pass is planned): the others are clean or at --max-spp.
+  uint64_t pixels_refining = 0;
 };
 
 /// run() may be stopped from another thread (request_stop); the checkpoint then holds what is
@@ -73,6 +80,8 @@ class ImageRender {
   void request_stop() { stop_.request_stop(); }
   /// For tests: stop once this many first-pass tiles have been finished in this run.
   void stop_after_tiles(int tiles) { stop_after_tiles_ = tiles; }
+  /// For tests: stop once this many chunks of the passes after the first are done in this run.
+  void stop_after_pixel_chunks(int chunks) { stop_after_chunks_ = chunks; }
 
   RenderProgress progress() const;
   /// The finished part of the image, or of its crop window (unfinished tiles are black).
@@ -117,7 +126,9 @@ class ImageRender {
   std::stop_source stop_;
   std::atomic<int> tiles_finished_{0};
   int stop_after_tiles_ = -1;
-  std::atomic<uint64_t> done_{0}, total_{0};
+  int chunks_finished_ = 0;  // of the passes after the first, in this run
+  int stop_after_chunks_ = -1;
+  std::atomic<uint64_t> done_{0}, total_{0}, pixels_refining_{0};
   uint64_t pixels_supersampled_ = 0;
   int antialias_passes_run_ = 0;
   double seconds_ = 0;

@@ -79,6 +79,34 @@ TEST(ProgressEstimate, AResumedRenderMeasuresOnlyItsOwnRate) {
   EXPECT_EQ(e.view().antialias_pass, 1);
 }
 
+TEST(ProgressEstimate, NoisePassesAreCountedFromHowTheirPixelsShrink) {
+  // 100x100 pixels, 16 samples each first; --max-spp 128: passes of 16, 32 and 64 samples.
+  RenderSettings s;
+  s.noise_threshold = 0.01f;
+  s.max_samples_per_pixel = 128;
+  ProgressEstimate e(100, 100, s);
+  e.update({0, 160000, 0, 0}, 0);
+  e.update({80000, 160000, 0, 0}, 1);
+  // Before a plan: a quarter of the pixels in pass 1, three quarters of those in each next.
+  const double guess = 2500 * (16 + 0.75 * 32 + 0.5625 * 64);
+  EXPECT_NEAR(e.view().fraction, 80000 / (160000 + guess), 1e-12);
+  EXPECT_FALSE(e.view().clean_fraction);
+  // Pass 1 refines 1000 pixels: 90% are clean; then pass 2 refines 500.
+  e.update({160000, 160000 + 16000, 0, 1, 1000}, 2);
+  EXPECT_DOUBLE_EQ(*e.view().clean_fraction, 0.9);
+  EXPECT_EQ(e.view().antialias_pass, 1);
+  EXPECT_NEAR(e.view().fraction, 160000 / (160000 + 16000 + 1000 * (0.75 * 32 + 0.5625 * 64)), 1e-12);
+  e.update({176000, 176000, 0, 2, 0}, 3);  // choosing pass 2's pixels
+  EXPECT_TRUE(e.view().choosing_pixels);
+  EXPECT_DOUBLE_EQ(*e.view().clean_fraction, 0.9);
+  e.update({176000, 176000 + 16000, 0, 2, 500}, 4);
+  EXPECT_DOUBLE_EQ(*e.view().clean_fraction, 0.95);
+  // Pass 2 then has the last two passes' ratio, a half; noise samples ran at a tenth of the
+  // first pass's rate (16000 in 2 s against 160000 in 2 s), so each counts ten.
+  const double noise_done = 16000, noise_total = 32000 + 500 * 0.5 * 64;
+  EXPECT_NEAR(e.view().fraction, (160000 + 10 * noise_done) / (160000 + 10 * noise_total), 1e-12);
+}
+
 TEST(SupersampleShare, CountsBadPixelsAndTheirNeighboursInFinishedTilesOnly) {
   // Two 4x4 tiles side by side; the right one is unfinished (black). The left one has a
   // vertical edge between columns 1 and 2: columns 0..3 are bad or next to a bad pixel.
