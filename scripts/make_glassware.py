@@ -122,11 +122,26 @@ def tumbler_profile(wall):
     return [(0.0, 0.0), (0.5, 0.0), (0.5, 1.0), (0.5 - wall, 1.0), (0.5 - wall, 0.2), (0.0, 0.2)]
 
 
+def wine_glass_profile():
+    """A wine glass 1.4 tall: a 0.36 foot, a 0.03 stem, a tulip bowl of 1 cm walls to a 0.28 rim."""
+    profile = [(0.0, 0.0), (0.36, 0.0)]
+    profile += arc((0.36, 0.01), 0.01, -90, 90, 6)[1:]                       # rounded foot edge
+    profile += [(0.2, 0.032), (0.1, 0.05), (0.05, 0.08), (0.034, 0.13)]      # foot rising to the stem
+    profile += [(0.03, 0.2), (0.03, 0.5), (0.033, 0.62), (0.045, 0.68)]    # stem
+    profile += [(0.1, 0.735), (0.16, 0.77), (0.22, 0.82), (0.27, 0.88), (0.305, 0.95), (0.325, 1.03),
+                (0.33, 1.1), (0.325, 1.18), (0.31, 1.26), (0.295, 1.33), (0.285, 1.4)]  # bowl, outside
+    profile += arc((0.28, 1.4), 0.005, 0, 180, 6)[1:]                       # rounded rim
+    profile += [(0.285, 1.33), (0.3, 1.26), (0.315, 1.18), (0.32, 1.1), (0.315, 1.03), (0.295, 0.955),
+                (0.26, 0.89), (0.21, 0.83), (0.15, 0.785), (0.09, 0.755), (0.0, 0.745)]  # bowl, inside
+    return profile
+
+
 def main():
     outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "scenes", "Assets", "meshes")
     write_obj(os.path.join(outdir, "pint_glass.obj"), "pint glass", pint_profile(), 96)
     write_obj(os.path.join(outdir, "bowl.obj"), "bowl", bowl_profile(), 72)
     write_obj(os.path.join(outdir, "tumbler.obj"), "tumbler with 1 mm walls", tumbler_profile(0.01), 96)
+    write_obj(os.path.join(outdir, "wine_glass.obj"), "wine glass", wine_glass_profile(), 96)
 
 
 if __name__ == "__main__":

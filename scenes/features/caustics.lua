@@ -2,7 +2,7 @@
 -- table under one small light behind them. The light comes down at 42°, where the ball, a
 -- lens of focal length 1.5 R from its centre, focuses it onto the table top: a bright spot in
 -- its shadow; the glass throws a bright crescent from its curved walls and thick base.
--- Render: build/mjray --caustics 1e6 -a 2 scenes/features/caustics.lua     (caustics.png, 1280x720)
+-- Render: build/mjray --caustics 250000 --caustic-passes 16 --noise-threshold 0.01 --max-spp 256 scenes/features/caustics.lua     (caustics.png, 1280x720)
 -- Every node carries at most one transform, so either transform-order rule gives the scene.
 
 local root = gr.node('root')
