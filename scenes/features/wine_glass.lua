@@ -2,7 +2,7 @@
 -- lens focuses on the glass; the checkers before and behind it blur. A small lamp behind
 -- the glass throws its shadow toward the camera, with the bright ring its bowl focuses and
 -- the spot its foot and stem do; the table is seen through the bowl, upside down.
--- Render: build/mjray --caustics 250000 --caustic-passes 16 --noise-threshold 0.01 --max-spp 384 scenes/features/wine_glass.lua     (wine_glass.png, 1280x720)
+-- Render: build/mjray --caustics 250000 --caustic-passes 16 --noise-threshold 0.01 --max-spp 256 scenes/features/wine_glass.lua     (wine_glass.png, 1280x720)
 -- Every node carries at most one transform, so either transform-order rule gives the scene.
 
 local root = gr.node('root')

@@ -8,6 +8,15 @@
 
 namespace mjray {
 
+namespace {
+
+/// The pass numbers of LensPoints for the first pass and -a's estimate; a noise pass uses its
+/// first sample's number, 16 or more.
+constexpr uint64_t kFirstPassLens = 0;
+constexpr uint64_t kSupersampleLens = 1;
+
+}  // namespace
+
 ImageSampler::ImageSampler(const Camera& camera, const Integrator& integrator, int width, int height,
                            const SamplingSettings& settings, const PixelRect& region)
     : camera_(camera), integrator_(integrator), image_width_(width), region_(region), settings_(settings) {
@@ -22,12 +31,11 @@ StratifiedGrid stratified_grid(int n) {
   return {n / rows, rows};
 }
 
-Color ImageSampler::trace(float sx, float sy, uint32_t sample, RandomStream& random, TraceState& state) const {
+Color ImageSampler::trace(float sx, float sy, LensPoint lens, uint32_t sample, RandomStream& random,
+                          TraceState& state) const {
   state.camera_sample = sample;
   if (!camera_.has_lens()) return integrator_.radiance(camera_.generate_ray(sx, sy), random, state);
-  const float lens_u = random.uniform();
-  const float lens_v = random.uniform();
-  return integrator_.radiance(camera_.generate_ray(sx, sy, lens_u, lens_v), random, state);
+  return integrator_.radiance(camera_.generate_ray(sx, sy, lens.u, lens.v), random, state);
 }
 
 void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state) const {
@@ -37,16 +45,17 @@ void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& sta
   for (int y = rect.y0; y < rect.y1; ++y)
     for (int x = rect.x0; x < rect.x1; ++x) {
       const int ix = x + region_.x0, iy = y + region_.y0;
+      const LensPoints lens(settings_.seed, pixel_key(ix, iy), kFirstPassLens, uint32_t(std::max(1, n)));
       if (n <= 1) {
         RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(0));
-        film.add(x, y, trace(float(ix) + 0.5f, float(iy) + 0.5f, 0, random, state));
+        film.add(x, y, trace(float(ix) + 0.5f, float(iy) + 0.5f, lens.at(0), 0, random, state));
         continue;
       }
       for (int s = 0; s < n; ++s) {
         RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(uint32_t(s)));
         const float sx = float(ix) + (float(s % grid.columns) + random.uniform()) / float(grid.columns);
         const float sy = float(iy) + (float(s / grid.columns) + random.uniform()) / float(grid.rows);
-        film.add(x, y, trace(sx, sy, uint32_t(s), random, state));
+        film.add(x, y, trace(sx, sy, lens.at(uint32_t(s)), uint32_t(s), random, state));
       }
     }
 }
@@ -57,13 +66,15 @@ FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
   const StratifiedGrid cell = stratified_grid(std::max(1, settings_.samples_per_pixel));
   const int columns = n * cell.columns, rows = n * cell.rows;
   const int ix = x + region_.x0, iy = y + region_.y0;
+  const LensPoints lens(settings_.seed, pixel_key(ix, iy), kSupersampleLens, uint32_t(columns * rows));
   Color sum;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns; ++i) {
-      RandomStream random(settings_.seed, pixel_key(ix, iy), antialias_sample_index(uint32_t(j * columns + i)));
+      const uint32_t k = uint32_t(j * columns + i);
+      RandomStream random(settings_.seed, pixel_key(ix, iy), antialias_sample_index(k));
       const float sx = float(ix) + (float(i) + random.uniform()) / float(columns);
       const float sy = float(iy) + (float(j) + random.uniform()) / float(rows);
-      sum += trace(sx, sy, uint32_t(j * columns + i), random, state);
+      sum += trace(sx, sy, lens.at(k), k, random, state);
     }
   return {sum, float(columns * rows)};
 }
@@ -71,13 +82,14 @@ FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
 FilmPixel ImageSampler::more_samples(int x, int y, const PixelPass& pass, TraceState& state) const {
   const StratifiedGrid grid = stratified_grid(int(pass.count));
   const int ix = x + region_.x0, iy = y + region_.y0;
+  const LensPoints lens(settings_.seed, pixel_key(ix, iy), pass.first, pass.count);
   FilmPixel estimate;
   for (uint32_t k = 0; k < pass.count; ++k) {
     // Numbered on from the first pass's samples, so that each has a stream of its own.
     RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(pass.first + k));
     const float sx = float(ix) + (float(int(k) % grid.columns) + random.uniform()) / float(grid.columns);
     const float sy = float(iy) + (float(int(k) / grid.columns) + random.uniform()) / float(grid.rows);
-    estimate.add(trace(sx, sy, pass.first + k, random, state));
+    estimate.add(trace(sx, sy, lens.at(k), pass.first + k, random, state));
   }
   return estimate;
 }
@@ -112,7 +124,9 @@ void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, Trac
           // Jittered by up to half a cell either way, as POV-Ray's +J1.
           const float sx = (float(gx) + random.uniform() - 0.5f) / float(cells);
           const float sy = (float(gy) + random.uniform() - 0.5f) / float(cells);
-          sum += trace(sx, sy, uint32_t(s), random, state);
+          // A lattice point's samples are too few to stratify: its lens point is drawn.
+          const LensPoint lens{random.uniform(), random.uniform()};
+          sum += trace(sx, sy, lens, uint32_t(s), random, state);
         }
         known[k] = 1;
         return colours[k] = sum / float(spp);

@@ -8,6 +8,7 @@
 #include "mjray/camera/camera.h"
 #include "mjray/integrator/integrator.h"
 #include "mjray/render/film.h"
+#include "mjray/render/lens_points.h"
 #include "mjray/render/tile_layout.h"
 
 namespace mjray {
@@ -58,8 +59,9 @@ struct PixelPass {
 
 /// The random stream of a camera sample is keyed by (seed, pixel, sample index); draws within
 /// it are numbered in the order they are made: the position in the pixel (two, except for the
-/// single first-pass sample at the centre), the lens point (two, with a thin lens), then the
-/// integrator's (light samples, lobes, bounces), so no two draws of one sample collide.
+/// single first-pass sample at the centre), the lens point (two, with --aa-method subdivide
+/// only: the other passes take theirs from LensPoints), then the integrator's (light samples,
+/// lobes, bounces), so no two draws of one sample collide.
 /// Sample indices of the passes are disjoint:
 ///   first pass sample s (s < --spp; the pixel centre when --spp is 1): s · 2³²
 ///   adaptive anti-aliasing sample k of a pixel (k < N²·spp):           k + 1
@@ -115,9 +117,9 @@ class ImageSampler {
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }
   void first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const;
-  /// The radiance of camera sample `sample` of its pixel, at image position (sx, sy), drawing
-  /// the lens point first.
-  Color trace(float sx, float sy, uint32_t sample, RandomStream& random, TraceState& state) const;
+  /// The radiance of camera sample `sample` of its pixel, at image position (sx, sy), through
+  /// `lens` (with a thin lens).
+  Color trace(float sx, float sy, LensPoint lens, uint32_t sample, RandomStream& random, TraceState& state) const;
 
   const Camera& camera_;
   const Integrator& integrator_;
