@@ -256,6 +256,11 @@ std::vector<OptionSpec> make_table() {
       {{"--gi"}, "N", "global illumination: N photons and final gathering (default 0: off)",
        [](RunOptions& o, auto& n, auto& v) { o.job.photons.global_photons = parse_photon_count(n, v); },
        [](const JobOptions& o) { return std::to_string(o.photons.global_photons); }},
+      {{"--gather-rays"}, "N",
+       "with --gi, final-gather rays per camera sample at a surface (a square grid; default 64); with "
+       "--noise-threshold, 4 and more samples where the gathers disagree spend the time better",
+       [](RunOptions& o, auto& n, auto& v) { o.job.photons.gather_rays = int(parse_integer(n, v, 1, 4096)); },
+       [](const JobOptions& o) { return std::to_string(o.photons.gather_rays); }},
       {{"--aperture"}, "R", "thin-lens depth of field with lens radius R (overrides gr.lens; 0 = pinhole)",
        [](RunOptions& o, auto& n, auto& v) { o.job.view.aperture_radius = float(parse_at_least_zero(n, v, "a lens radius of at least 0")); },
        nullptr},  // in the fingerprint's "lens" line, with gr.lens's

@@ -31,7 +31,7 @@ const std::vector<Case> kChangesTheImage = {
     {{"--gamma", "srgb"}},  {{"--bit-depth", "16"}}, {{"--jpeg-quality", "70"}},
     {{"--aperture", "0.1", "--focus-distance", "3"}}, {{"--focus-distance", "3", "--aperture", "0.2"}},
     {{"--size", "16x12"}},  {{"--noise-threshold", "0.02"}}, {{"--max-spp", "64", "--noise-threshold", "0.02"}},
-    {{"--caustic-passes", "4", "--caustics", "1000"}},
+    {{"--caustic-passes", "4", "--caustics", "1000"}}, {{"--gather-rays", "4", "--gi", "1000"}},
 };
 
 /// Options that never change an image's bytes: how it is computed, where it goes, what the
