@@ -44,6 +44,9 @@ std::string photon_text(const JobStatistics& s) {
 /// What anti-aliasing did to the pixels, for the statistics' pixels line.
 std::string antialiasing_text(const RenderStats& r) {
   if (r.subdivided) return "subdivided from their corners in the first pass (--aa-method subdivide)";
+  if (r.refined_to_noise)
+    return std::to_string(r.pixels_supersampled) + " refinements in " + std::to_string(r.antialias_passes) +
+           " noise passes (--noise-threshold)";
   return std::to_string(r.pixels_supersampled) + " supersampled in " + std::to_string(r.antialias_passes) +
          " anti-aliasing passes";
 }
@@ -88,8 +91,9 @@ std::string frame_line(const JobStatistics& s, const std::string& frame, bool de
                 "%.1f MiB peak\n",
                 s.image.c_str(), frame.c_str(), s.seconds_total(), s.seconds_build, s.seconds_render,
                 (unsigned long long)s.render.rays.total(), s.rays_per_second() / 1e6,
-                s.render.subdivided ? "pixels subdivided"
-                                    : (std::to_string(s.render.pixels_supersampled) + " pixels supersampled").c_str(),
+                s.render.subdivided         ? "pixels subdivided"
+                : s.render.refined_to_noise ? (std::to_string(s.render.pixels_supersampled) + " pixel refinements").c_str()
+                                            : (std::to_string(s.render.pixels_supersampled) + " pixels supersampled").c_str(),
                 double(s.peak_rss_bytes) / (1024.0 * 1024.0));
   return text;
 }
@@ -106,6 +110,7 @@ std::string animation_summary(const std::vector<JobStatistics>& frames, size_t k
     all.render.pixels_supersampled += s.render.pixels_supersampled;
     all.render.antialias_passes += s.render.antialias_passes;
     all.render.subdivided = all.render.subdivided || s.render.subdivided;
+    all.render.refined_to_noise = all.render.refined_to_noise || s.render.refined_to_noise;
     all.primitives = std::max(all.primitives, s.primitives);
     all.peak_rss_bytes = std::max(all.peak_rss_bytes, s.peak_rss_bytes);
     if (all.accel.empty()) all.accel = s.accel;

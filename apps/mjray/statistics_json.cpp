@@ -54,6 +54,7 @@ Json statistics_object(const JobStatistics& s) {
               {"peak_rss_bytes", s.peak_rss_bytes},
               {"grid_resolution", s.grid_resolution}};
   if (s.render.subdivided) out["antialias_method"] = "subdivide";  // pixels_supersampled is then 0
+  if (s.render.refined_to_noise) out["noise_target"] = true;  // pixels_supersampled counts refinements
   if (s.photons) add_photons(out, *s.photons);
   if (!s.ranks.empty()) {
     Json ranks = Json::array();

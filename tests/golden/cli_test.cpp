@@ -510,6 +510,11 @@ TEST_F(GoldenCli, StatisticsPrintOnlyWhenAskedAndQuietLeavesOnlyThem) {
   EXPECT_EQ(r.err, "");
   r = run({"--quiet", "--stats", scene.string()});
   EXPECT_EQ(r.err.rfind("mjray: wrote " + image + "\n  time ", 0), 0u) << r.err;
+  // Under a noise target: 16 samples in each of the 48 pixels first, then the noise passes.
+  r = run({"--quiet", "--stats", "--noise-threshold", "0.001", scene.string()});
+  EXPECT_NE(r.err.find("  rays      "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" refinements in "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" noise passes (--noise-threshold)\n"), std::string::npos) << r.err;
 }
 
 TEST_F(GoldenCli, SrgbOutputDecodesImageTexturesSoTheyKeepTheirValues) {

@@ -234,6 +234,7 @@ RenderStats ImageRender::stats() const {
   s.pixels_supersampled = pixels_supersampled_;
   s.antialias_passes = antialias_passes_run_;
   s.subdivided = settings_.subdivides();
+  s.refined_to_noise = settings_.targets_noise();
   s.seconds = seconds_;
   return s;
 }

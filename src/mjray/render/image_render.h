@@ -48,6 +48,9 @@ struct RenderStats {
   uint64_t pixels_supersampled = 0;
   int antialias_passes = 0;
   bool subdivided = false;  ///< --aa-method subdivide: every pixel anti-aliased in the first pass
+  /// --noise-threshold: the passes after the first added samples to noisy pixels (then
+  /// pixels_supersampled counts each pixel once per pass that refined it).
+  bool refined_to_noise = false;
 };
 
 /// Work done so far, in camera samples (--spp per pixel in the first pass); `total` grows as anti-aliasing passes find work.
