@@ -9,7 +9,7 @@
 #   bench/cycles_equal_time.sh [OUTDIR] [GI_PHOTONS]   (defaults: out/cycles_equal_time 200000)
 #   bench/cycles_equal_time.sh --smoke [OUTDIR]        one 0.5 s budget, 16-sample references
 #
-# Environment: MJRAY (default build/mjray); SWEEP, the photon counts run at 1 s (default
+# Environment: MJRAY (default build/mjray); NOISE_THRESHOLD, mjray's under the budgets (default 0.01); SWEEP, the photon counts run at 1 s (default
 # "25000 50000 100000 200000"; empty for none); REFERENCE_SAMPLES, Cycles' (default 4096).
 set -euo pipefail
 cd "$(dirname "$0")/.."
