@@ -171,38 +171,33 @@ TEST_F(MpiRender, SubdividedAntialiasingIsTheSameBytesForOneAndTwoRanks) {
   EXPECT_EQ(read_file(out), reference);
 }
 
+/// Renders the glass scene (in `dir`) with `options` by mjray, then by mjray-mpi on each of `ranks`
+/// (one thread each), and expects the same bytes.
+void expect_mjray_bytes_for_ranks(const std::filesystem::path& dir, const std::vector<std::string>& options,
+                                  const std::vector<int>& ranks) {
+  const auto scene = write_file(dir / "glass.lua", glass_scene("'glass.png'"));
+  ASSERT_EQ(run(mjray(plus(plus({"--quiet"}, options), {"--output", (dir / "ref.png").string(), scene.string()}))), 0);
+  const std::string reference = read_file(dir / "ref.png");
+  ASSERT_FALSE(reference.empty());
+  for (const int n : ranks) {
+    const auto out = dir / ("np" + std::to_string(n) + ".png");
+    const auto log = dir / "log.txt";
+    ASSERT_EQ(run(plus(plus(mpirun(n), {"--quiet", "-j", "1"}), plus(options, {"--output", out.string(), scene.string()})),
+                  log), 0) << read_file(log);
+    EXPECT_EQ(read_file(out), reference) << n << " ranks";
+  }
+}
+
 TEST_F(MpiRender, PhotonMapsAreTheSameBytesForOneAndTwoRanks) {
   // Every rank builds the same caustic and global maps (photons keyed by the seed), so the
   // ranks' tiles agree with mjray's image.
-  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
-  const std::vector<std::string> photons = {"--caustics", "20000", "--gi", "4000", "--seed", "3"};
-  ASSERT_EQ(run(mjray(plus(plus({"--quiet"}, photons), {"--output", (dir_ / "ref.png").string(), scene.string()}))), 0);
-  const std::string reference = read_file(dir_ / "ref.png");
-  ASSERT_FALSE(reference.empty());
-  for (const int ranks : {1, 2}) {
-    const auto out = dir_ / ("np" + std::to_string(ranks) + ".png");
-    const auto log = dir_ / "log.txt";
-    ASSERT_EQ(run(plus(plus(mpirun(ranks), {"--quiet", "-j", "1"}), plus(photons, {"--output", out.string(), scene.string()})),
-                  log), 0) << read_file(log);
-    EXPECT_EQ(read_file(out), reference) << ranks << " ranks";
-  }
+  expect_mjray_bytes_for_ranks(dir_, {"--caustics", "20000", "--gi", "4000", "--seed", "3"}, {1, 2});
 }
 
 TEST_F(MpiRender, ProgressiveCausticsUnderANoiseTargetAreTheSameBytesForTwoAndThreeRanks) {
   // The noise passes' pixels are shared among the ranks, each sample reading its caustic pass.
-  const auto scene = write_file(dir_ / "glass.lua", glass_scene("'glass.png'"));
-  const std::vector<std::string> options = {"--caustics", "5000", "--caustic-passes", "4", "--noise-threshold", "0.05",
-                                            "--max-spp", "64", "--seed", "3"};
-  ASSERT_EQ(run(mjray(plus(plus({"--quiet"}, options), {"--output", (dir_ / "ref.png").string(), scene.string()}))), 0);
-  const std::string reference = read_file(dir_ / "ref.png");
-  ASSERT_FALSE(reference.empty());
-  for (const int ranks : {2, 3}) {
-    const auto out = dir_ / ("np" + std::to_string(ranks) + ".png");
-    const auto log = dir_ / "log.txt";
-    ASSERT_EQ(run(plus(plus(mpirun(ranks), {"--quiet", "-j", "1"}), plus(options, {"--output", out.string(), scene.string()})),
-                  log), 0) << read_file(log);
-    EXPECT_EQ(read_file(out), reference) << ranks << " ranks";
-  }
+  expect_mjray_bytes_for_ranks(dir_, {"--caustics", "5000", "--caustic-passes", "4", "--noise-threshold", "0.05",
+                                       "--max-spp", "64", "--seed", "3"}, {2, 3});
 }
 
 TEST_F(MpiRender, TimeLimitIsRefusedWithTheUsageExitCode) {
