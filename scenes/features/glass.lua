@@ -2,7 +2,7 @@
 -- refraction only (gr.refractedmaterial, index 1.5), a blend of 30% mirror and 70% refraction
 -- (gr.reflectrefractmaterial, index 1.33), and Fresnel glass (gr.fresneldiectricmaterial,
 -- index 1.5), whose mirror share grows toward the rim.
--- Render: build/mjray -r 6 -f 6 scenes/features/glass.lua     (glass.png beside this file)
+-- Render: build/mjray -r 6 -f 6 --noise-threshold 0.02 scenes/features/glass.lua     (glass.png beside this file)
 
 local root = gr.node('root')
 

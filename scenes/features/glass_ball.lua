@@ -2,7 +2,7 @@
 -- one soft light. Shadow rays pass through the glass, keeping 1 − F(θ) at each crossing, so
 -- its shadow is faint with a darker rim where the light grazes it, while the plastic ball's
 -- is solid; the checkerboard shows through and bent by the glass.
--- Render: build/mjray -s 3 -a 2 scenes/features/glass_ball.lua     (glass_ball.png, 480x270)
+-- Render: build/mjray --noise-threshold 0.02 scenes/features/glass_ball.lua     (glass_ball.png, 480x270)
 -- Every node carries at most one transform, so either transform-order rule gives the same scene.
 
 local root = gr.node('root')

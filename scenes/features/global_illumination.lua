@@ -3,7 +3,7 @@
 -- white walls and the blocks turn pink beside the red wall and green beside the green one,
 -- and the ceiling, which the lamp does not reach, is lit from below. Without --gi it is the
 -- CS 488 picture: the ambient term stands in for all of that.
--- Render: build/mjray --gi 100000 scenes/features/global_illumination.lua     (global_illumination.png, 400x300)
+-- Render: build/mjray --gi 100000 --gather-rays 4 --noise-threshold 0.01 scenes/features/global_illumination.lua     (global_illumination.png, 400x300)
 -- Every node carries at most one transform, so either transform-order rule gives the scene.
 
 local root = gr.node('root')
