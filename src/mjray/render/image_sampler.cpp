@@ -38,6 +38,14 @@ Color ImageSampler::trace(float sx, float sy, LensPoint lens, uint32_t sample, R
   return integrator_.radiance(camera_.generate_ray(sx, sy, lens.u, lens.v), random, state);
 }
 
+Color ImageSampler::stratified_sample(int ix, int iy, StratifiedGrid grid, uint32_t k, uint64_t stream, LensPoint lens,
+                                      uint32_t sample, TraceState& state) const {
+  RandomStream random(settings_.seed, pixel_key(ix, iy), stream);
+  const float sx = float(ix) + (float(k % uint32_t(grid.columns)) + random.uniform()) / float(grid.columns);
+  const float sy = float(iy) + (float(k / uint32_t(grid.columns)) + random.uniform()) / float(grid.rows);
+  return trace(sx, sy, lens, sample, random, state);
+}
+
 void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state) const {
   if (settings_.subdivides()) return first_pass_subdivided(rect, film, state);
   const int n = settings_.first_pass_samples();
@@ -51,12 +59,8 @@ void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& sta
         film.add(x, y, trace(float(ix) + 0.5f, float(iy) + 0.5f, lens.at(0), 0, random, state));
         continue;
       }
-      for (int s = 0; s < n; ++s) {
-        RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(uint32_t(s)));
-        const float sx = float(ix) + (float(s % grid.columns) + random.uniform()) / float(grid.columns);
-        const float sy = float(iy) + (float(s / grid.columns) + random.uniform()) / float(grid.rows);
-        film.add(x, y, trace(sx, sy, lens.at(uint32_t(s)), uint32_t(s), random, state));
-      }
+      for (uint32_t s = 0; s < uint32_t(n); ++s)
+        film.add(x, y, stratified_sample(ix, iy, grid, s, first_pass_sample_index(s), lens.at(s), s, state));
     }
 }
 
@@ -68,14 +72,8 @@ FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
   const int ix = x + region_.x0, iy = y + region_.y0;
   const LensPoints lens(settings_.seed, pixel_key(ix, iy), kSupersampleLens, uint32_t(columns * rows));
   Color sum;
-  for (int j = 0; j < rows; ++j)
-    for (int i = 0; i < columns; ++i) {
-      const uint32_t k = uint32_t(j * columns + i);
-      RandomStream random(settings_.seed, pixel_key(ix, iy), antialias_sample_index(k));
-      const float sx = float(ix) + (float(i) + random.uniform()) / float(columns);
-      const float sy = float(iy) + (float(j) + random.uniform()) / float(rows);
-      sum += trace(sx, sy, lens.at(k), k, random, state);
-    }
+  for (uint32_t k = 0; k < uint32_t(columns * rows); ++k)
+    sum += stratified_sample(ix, iy, {columns, rows}, k, antialias_sample_index(k), lens.at(k), k, state);
   return {sum, float(columns * rows)};
 }
 
@@ -86,10 +84,8 @@ FilmPixel ImageSampler::more_samples(int x, int y, const PixelPass& pass, TraceS
   FilmPixel estimate;
   for (uint32_t k = 0; k < pass.count; ++k) {
     // Numbered on from the first pass's samples, so that each has a stream of its own.
-    RandomStream random(settings_.seed, pixel_key(ix, iy), first_pass_sample_index(pass.first + k));
-    const float sx = float(ix) + (float(int(k) % grid.columns) + random.uniform()) / float(grid.columns);
-    const float sy = float(iy) + (float(int(k) / grid.columns) + random.uniform()) / float(grid.rows);
-    estimate.add(trace(sx, sy, lens.at(k), pass.first + k, random, state));
+    const uint32_t sample = pass.first + k;
+    estimate.add(stratified_sample(ix, iy, grid, k, first_pass_sample_index(sample), lens.at(k), sample, state));
   }
   return estimate;
 }

@@ -117,6 +117,11 @@ class ImageSampler {
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }
   void first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const;
+  /// Sample k of a pass of grid.columns × grid.rows samples over image pixel (ix, iy): jittered
+  /// in cell k of the grid, from random stream `stream`, through `lens`; `sample` is its number
+  /// among the pixel's camera samples.
+  Color stratified_sample(int ix, int iy, StratifiedGrid grid, uint32_t k, uint64_t stream, LensPoint lens,
+                          uint32_t sample, TraceState& state) const;
   /// The radiance of camera sample `sample` of its pixel, at image position (sx, sy), through
   /// `lens` (with a thin lens).
   Color trace(float sx, float sy, LensPoint lens, uint32_t sample, RandomStream& random, TraceState& state) const;

@@ -20,9 +20,11 @@ Color PhotonMappedLight::radiance(const SurfaceInteraction& si, const ShadingFra
                                   float weight, RandomStream& random, TraceState& state) const {
   Color result;
   // Each camera sample reads its own pass of the caustic map, in turn.
-  const size_t pass = maps_.caustic_passes() > 0 ? state.camera_sample % maps_.caustic_passes() : 0;
-  if (maps_.caustic_passes() > 0 && !maps_.caustic(pass).empty() && !local.kd.is_black())
-    result += local.kd * irradiance_estimate(maps_.caustic(pass), si.point, frame.n, maps_.caustic_query(pass));
+  if (maps_.caustic_passes() > 0 && !local.kd.is_black()) {
+    const size_t pass = state.camera_sample % maps_.caustic_passes();
+    if (!maps_.caustic(pass).empty())
+      result += local.kd * irradiance_estimate(maps_.caustic(pass), si.point, frame.n, maps_.caustic_query(pass));
+  }
   if (!maps_.irradiance().empty()) result += final_gather(si, frame, weight, random, state.rays);
   return result;
 }
