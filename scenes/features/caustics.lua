@@ -36,6 +36,8 @@ root:add_child(pint_at)
 
 -- the light: small, behind the glasses, 42° above the table as seen from the ball
 local lamp = gr.light({-0.2, 5.3, 5.1}, {0.95, 0.92, 0.85}, {1, 0, 0})
+-- what the glass shows of the room behind the camera: dim grey walls, not a blue sky
+gr.background({0.3, 0.3, 0.31})
 gr.render(root, 'caustics.png', 1280, 720,
           {0, 2.4, -4.6}, {0, -0.42, 1}, {0, 1, 0}, 40,
           {0.12, 0.12, 0.13}, {lamp})
