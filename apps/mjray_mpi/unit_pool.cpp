@@ -13,6 +13,7 @@ UnitPool::UnitPool(const ImageSampler& sampler, const TileLayout& layout, int th
 }
 
 UnitPool::~UnitPool() {
+  abandon_.request_stop();  // the units in progress end at their next pixel
   {
     std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -63,7 +64,9 @@ void UnitPool::work(int thread) {
     // Compute the unit and the rays it cast.
     const auto start = std::chrono::steady_clock::now();
     const RayCounters before = state.rays;
-    ResultMessage result{phase, unit.kind, unit.id, {}, render_unit(sampler_, layout_, unit, scratch_, state)};
+    auto values = render_unit(sampler_, layout_, unit, scratch_, state, abandon_.get_token());
+    if (!values) return;
+    ResultMessage result{phase, unit.kind, unit.id, {}, std::move(*values)};
     result.rays = state.rays;
     result.rays.primary -= before.primary;
     result.rays.secondary -= before.secondary;

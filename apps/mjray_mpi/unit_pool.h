@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <deque>
 #include <mutex>
+#include <stop_token>
 #include <thread>
 #include <vector>
 
@@ -20,7 +21,7 @@ class UnitPool {
  public:
   /// The sampler must outlive the pool.
   UnitPool(const ImageSampler& sampler, const TileLayout& layout, int threads);
-  /// Stops after the units in progress; queued ones are dropped.
+  /// Abandons the units in progress (at their next pixel) and drops the queued ones.
   ~UnitPool();
   UnitPool(const UnitPool&) = delete;
   UnitPool& operator=(const UnitPool&) = delete;
@@ -49,6 +50,7 @@ class UnitPool {
   std::vector<ResultMessage> results_;
   RankStatistics done_;
   bool stopping_ = false;
+  std::stop_source abandon_;
   std::vector<std::thread> threads_;
 };
 

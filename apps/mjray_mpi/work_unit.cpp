@@ -6,18 +6,22 @@
 
 namespace mjray {
 
-std::vector<FilmPixel> render_unit(const ImageSampler& sampler, const TileLayout& layout, const WorkUnit& unit,
-                                   Film& scratch, TraceState& state) {
+std::optional<std::vector<FilmPixel>> render_unit(const ImageSampler& sampler, const TileLayout& layout,
+                                                  const WorkUnit& unit, Film& scratch, TraceState& state,
+                                                  std::stop_token stop) {
   std::vector<FilmPixel> values;
   if (unit.kind == WorkUnit::Kind::kPixels) {
     values.reserve(unit.pixels.size());
-    for (const int32_t p : unit.pixels)
+    for (const int32_t p : unit.pixels) {
+      if (stop.stop_requested()) return std::nullopt;
       values.push_back(sampler.sample_pixel(p % sampler.width(), p / sampler.width(), unit.pass, state));
+    }
     return values;
   }
-  // The first pass adds to the film, so the rectangle starts empty and is emptied again.
+  // The first pass adds to the film, so the rectangle starts empty and is emptied again (an
+  // abandoned one is left as it is: its pool is going away).
   const PixelRect r = layout.rect(unit.id);
-  sampler.first_pass(r, scratch, state);
+  if (!sampler.first_pass(r, scratch, state, stop)) return std::nullopt;
   values.reserve(size_t(r.pixel_count()));
   for (int y = r.y0; y < r.y1; ++y)
     for (int x = r.x0; x < r.x1; ++x) values.push_back(std::exchange(scratch.at(x, y), FilmPixel{}));

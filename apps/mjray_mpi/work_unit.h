@@ -3,6 +3,8 @@
 /// anti-aliasing pass (whose pixels need the whole film to choose, so rank 0 chooses them).
 
 #include <cstdint>
+#include <optional>
+#include <stop_token>
 #include <vector>
 
 #include "mjray/render/image_sampler.h"
@@ -21,9 +23,11 @@ struct WorkUnit {
 
 /// The film pixels of a rendered unit: a tile's rectangle row by row (rendered through
 /// `scratch`, a film of the image's size whose rectangle must be empty), or what the unit's
-/// pass computes for each of its pixels in order.
-std::vector<FilmPixel> render_unit(const ImageSampler& sampler, const TileLayout& layout, const WorkUnit& unit,
-                                   Film& scratch, TraceState& state);
+/// pass computes for each of its pixels in order. Nothing once `stop` is requested (it is
+/// looked at between pixels, and between a tile's rows), so that a stopped rank ends at once.
+std::optional<std::vector<FilmPixel>> render_unit(const ImageSampler& sampler, const TileLayout& layout,
+                                                  const WorkUnit& unit, Film& scratch, TraceState& state,
+                                                  std::stop_token stop);
 
 /// Copies a rendered tile's pixels (as render_unit returns them) into its rectangle of `film`.
 void store_tile(const TileLayout& layout, int tile, const std::vector<FilmPixel>& values, Film& film);

@@ -421,6 +421,9 @@ TEST_F(MpiRender, SigintWritesThePartialImageAndResumeUnderMpiFinishesItToTheSam
     const int code = first.exit_code();
     log_text = first.log();
     if (log_text.find("mjray: wrote ") != std::string::npos) continue;  // finished first
+    // mpirun kills the ranks 1 s after it passes Ctrl-C on: on a machine busier than that,
+    // rank 0 may not have written in time (the next test shows that nothing torn is left).
+    if (log_text.find("mjray: interrupted: wrote") == std::string::npos) continue;
     EXPECT_NE(code, 0) << log_text;  // Open MPI's mpirun returns 1 after it forwards SIGINT
     break;
   }

@@ -17,6 +17,7 @@
 #include "mjray/io/image_codec.h"
 #include "mjray/io/image_reader.h"
 #include "mjray/render/image_render.h"
+#include "mjray/render/image_sampler.h"
 #include "mjray/render/render_checkpoint.h"
 #include "support/child_process.h"
 #include "support/scene_builder.h"
@@ -98,6 +99,32 @@ TEST(GoldenRender, StopAfterSomeTilesThenResumeGivesTheSameImage) {
       EXPECT_EQ(second.image().pixels(), reference.pixels())
           << "stopped after " << stop_after << ", -a " << aa << (s.subdivides() ? " subdivided" : "");
       std::filesystem::remove_all(dir);
+    }
+  }
+}
+
+TEST(GoldenRender, AStoppedFirstPassEndsBetweenRowsAndKeepsTheRowsItDid) {
+  // What a stopped MPI rank relies on to end at once: first_pass looks at its stop token
+  // before each row, so a request made while a row renders ends the tile after that row.
+  Fixture f;
+  for (const auto& [aa, method] : {std::pair{0, AntialiasMethod::kGrid}, {3, AntialiasMethod::kSubdivide}}) {
+    RenderSettings s;
+    s.antialias_samples = aa;
+    s.antialias_method = method;
+    const ImageSampler sampler(f.camera, f.integrator, 64, 64, s);
+    TraceState state;
+    Film whole(64, 64);
+    ASSERT_TRUE(sampler.first_pass({0, 0, 64, 4}, whole, state));
+
+    std::stop_source stop;
+    Film film(64, 64);
+    ASSERT_TRUE(sampler.first_pass({0, 0, 64, 1}, film, state, stop.get_token()));
+    stop.request_stop();
+    EXPECT_FALSE(sampler.first_pass({0, 1, 64, 4}, film, state, stop.get_token()));
+    for (int x = 0; x < 64; ++x) {
+      EXPECT_EQ(film.at(x, 0).weight, whole.at(x, 0).weight) << x;
+      EXPECT_EQ(film.at(x, 0).sum.r, whole.at(x, 0).sum.r) << x;
+      for (int y = 1; y < 4; ++y) EXPECT_EQ(film.at(x, y).weight, 0.0f) << x << "," << y;
     }
   }
 }

@@ -46,11 +46,12 @@ Color ImageSampler::stratified_sample(int ix, int iy, StratifiedGrid grid, uint3
   return trace(sx, sy, lens, sample, random, state);
 }
 
-void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state) const {
-  if (settings_.subdivides()) return first_pass_subdivided(rect, film, state);
+bool ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& state, std::stop_token stop) const {
+  if (settings_.subdivides()) return first_pass_subdivided(rect, film, state, stop);
   const int n = settings_.first_pass_samples();
   const StratifiedGrid grid = stratified_grid(n);
-  for (int y = rect.y0; y < rect.y1; ++y)
+  for (int y = rect.y0; y < rect.y1; ++y) {
+    if (stop.stop_requested()) return false;
     for (int x = rect.x0; x < rect.x1; ++x) {
       const int ix = x + region_.x0, iy = y + region_.y0;
       const LensPoints lens(settings_.seed, pixel_key(ix, iy), kFirstPassLens, uint32_t(std::max(1, n)));
@@ -62,6 +63,8 @@ void ImageSampler::first_pass(const PixelRect& rect, Film& film, TraceState& sta
       for (uint32_t s = 0; s < uint32_t(n); ++s)
         film.add(x, y, stratified_sample(ix, iy, grid, s, first_pass_sample_index(s), lens.at(s), s, state));
     }
+  }
+  return true;
 }
 
 FilmPixel ImageSampler::supersample(int x, int y, TraceState& state) const {
@@ -90,7 +93,8 @@ FilmPixel ImageSampler::more_samples(int x, int y, const PixelPass& pass, TraceS
   return estimate;
 }
 
-void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const {
+bool ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state,
+                                         std::stop_token stop) const {
   const int cells = SubdivisionLattice::finest_for(settings_.antialias_samples).cells();
   const int spp = std::max(1, settings_.samples_per_pixel);
   const uint64_t image_columns = uint64_t(image_width_) * uint64_t(cells) + 1;
@@ -100,6 +104,7 @@ void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, Trac
   std::vector<Color> colours(columns * size_t(cells + 1));
   std::vector<uint8_t> known(colours.size(), 0);
   for (int y = rect.y0; y < rect.y1; ++y) {
+    if (stop.stop_requested()) return false;
     if (y > rect.y0) {
       const size_t last = columns * size_t(cells);
       std::copy(colours.begin() + std::ptrdiff_t(last), colours.end(), colours.begin());
@@ -130,6 +135,7 @@ void ImageSampler::first_pass_subdivided(const PixelRect& rect, Film& film, Trac
       film.add(x, y, subdivided_estimate(0, 0, cells, settings_.antialias_threshold, corner));
     }
   }
+  return true;
 }
 
 }  // namespace mjray

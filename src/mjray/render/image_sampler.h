@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stop_token>
 
 #include "mjray/camera/camera.h"
 #include "mjray/integrator/integrator.h"
@@ -100,8 +101,9 @@ class ImageSampler {
 
   /// The first pass over `rect` (region coordinates): --spp stratified samples per pixel
   /// (one through the centre when --spp is 1), added to `film`; with settings().subdivides(),
-  /// each pixel's subdivided estimate instead.
-  void first_pass(const PixelRect& rect, Film& film, TraceState& state) const;
+  /// each pixel's subdivided estimate instead. Stops between rows once `stop` is requested
+  /// (the rows done are in `film`); returns whether every row was done.
+  bool first_pass(const PixelRect& rect, Film& film, TraceState& state, std::stop_token stop = {}) const;
   /// What `pass` computes for region pixel (x, y) (see PixelPass).
   FilmPixel sample_pixel(int x, int y, const PixelPass& pass, TraceState& state) const {
     return pass.kind == PixelPass::Kind::kSupersample ? supersample(x, y, state) : more_samples(x, y, pass, state);
@@ -116,7 +118,7 @@ class ImageSampler {
 
  private:
   uint64_t pixel_key(int x, int y) const { return uint64_t(y) * uint64_t(image_width_) + uint64_t(x); }
-  void first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state) const;
+  bool first_pass_subdivided(const PixelRect& rect, Film& film, TraceState& state, std::stop_token stop) const;
   /// Sample k of a pass of grid.columns × grid.rows samples over image pixel (ix, iy): jittered
   /// in cell k of the grid, from random stream `stream`, through `lens`; `sample` is its number
   /// among the pixel's camera samples.
