@@ -148,6 +148,36 @@ TEST_F(LuaExtensions, ASceneOwnReadobjWinsAndItsTablesMakeTheSameMeshAsTheBuiltI
             test::TestJob(builtin, 0, test::oracle_options()).render().pixels());
 }
 
+TEST_F(LuaExtensions, SetSmoothNormalsGivesAFileMeshVertexNormalsAndKeepsTheTransformOrder) {
+  // A unit cube: 8 shared vertices, no vn.
+  write("cube.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+        "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n");
+  const auto d = load("root = gr.node('root')\n"
+                      "a = gr.mesh('a', 'cube.obj')\nb = gr.mesh('b', 'cube.obj')\nc = gr.mesh('c', 'cube.obj')\n"
+                      "a:set_smooth_normals(180)\nb:set_smooth_normals(180)\nc:set_smooth_normals(30)\n"
+                      "a:translate(1, 0, 0)\na:rotate('y', 30)\n"
+                      "root:add_child(a)\nroot:add_child(b)\nroot:add_child(c)\n"
+                      "lights = {gr.light({0,0,10}, {1,1,1}, {1,0,0})}\n" + kRender);
+  const auto& nodes = d.jobs.at(0).root->children;
+  EXPECT_EQ(nodes.at(0)->mesh->normals.size(), 8u);   // one per corner of the cube
+  EXPECT_EQ(nodes.at(0)->mesh, nodes.at(1)->mesh);    // the same mesh and angle: computed once
+  EXPECT_EQ(nodes.at(2)->mesh->normals.size(), 24u);  // 30°: every right-angled edge a crease
+  EXPECT_FALSE(d.jobs.at(0).post_multiplied);
+}
+
+TEST_F(LuaExtensions, SetSmoothNormalsRefusesANodeWithoutAMeshAndAnAngleOutOfRange) {
+  EXPECT_EQ(error_of("s = gr.sphere('ball')\n\ns:set_smooth_normals(30)\n"),
+            at(3) + "node:set_smooth_normals: 'ball' is not a mesh (gr.mesh or gr.extendedmesh)");
+  write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(error_of("m = gr.mesh('m', 'tri.obj')\nm:set_smooth_normals(0)\n"),
+            at(2) + "node:set_smooth_normals: max_angle_degrees must be more than 0 and at most 180, got the number 0");
+  EXPECT_EQ(error_of("m = gr.mesh('m', 'tri.obj')\nm:set_smooth_normals(181)\n"),
+            at(2) + "node:set_smooth_normals: max_angle_degrees must be more than 0 and at most 180, got the number 181");
+  EXPECT_EQ(error_of("m = gr.mesh('m', 'tri.obj')\nm:set_smooth_normals('smooth')\n"),
+            at(2) + "node:set_smooth_normals: argument 1 (max_angle_degrees) must be a number, got the string 'smooth'");
+}
+
 TEST_F(LuaExtensions, WrongArgumentsNameTheCallAndLine) {
   EXPECT_EQ(error_of("\nm = gr.reflectivematerial({1,1}, {1,1,1}, 10, 0.5)\n"),
             at(2) + "gr.reflectivematerial: argument 1 (kd) must be a table of 3 numbers, got a table of 2 values");

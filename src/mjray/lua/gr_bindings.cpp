@@ -17,6 +17,7 @@ extern "C" {
 }
 
 #include "mjray/camera/camera.h"
+#include "mjray/geometry/smooth_normals.h"
 #include "mjray/io/obj_loader.h"
 #include "mjray/lua/lua_arguments.h"
 #include "mjray/lua/lua_context.h"
@@ -164,6 +165,29 @@ int node_set_material(lua_State* L) {
   auto* material = test_shared<Material>(L, 2, kMaterialType);
   if (!material) bad_argument(L, "node:set_material", 2, "material", "a material");
   node->material = *material;
+  return 0;
+}
+
+/// mesh:set_smooth_normals(max_angle_degrees): angle-weighted vertex normals for the node's
+/// mesh, creases sharper than the angle kept (see geometry/smooth_normals.h). Nodes that
+/// share a mesh and an angle share the result.
+int node_set_smooth_normals(lua_State* L) {
+  const char* fn = "node:set_smooth_normals";
+  auto& node = arg_node(L, 1, fn, "self");
+  const double degrees = arg_number(L, 2, fn, "max_angle_degrees");
+  if (!node->mesh)
+    throw ArgumentError(std::string(fn) + ": '" + node->name + "' is not a mesh (gr.mesh or gr.extendedmesh)");
+  if (!(degrees > 0 && degrees <= 180))
+    throw ArgumentError(std::string(fn) + ": max_angle_degrees must be more than 0 and at most 180, got " +
+                        describe(L, 2));
+  auto& cached = context(L).smoothed_meshes[{node->mesh, float(degrees)}];
+  if (!cached) {
+    // The copy's arrays, with a normal per corner at most.
+    const TriangleMesh& mesh = *node->mesh;
+    keep_bytes(L, mesh.memory_bytes() + mesh.triangles.size() * 3 * sizeof(Normal3));
+    cached = std::make_shared<const TriangleMesh>(with_smooth_normals(mesh, float(degrees)));
+  }
+  node->mesh = cached;
   return 0;
 }
 
@@ -396,6 +420,7 @@ void register_gr(lua_State* L) {
       {"add_child", guarded<node_add_child>}, {"set_material", guarded<node_set_material>},
       {"translate", guarded<node_translate>}, {"scale", guarded<node_scale>},
       {"rotate", guarded<node_rotate>},       {"render", guarded<gr_render>},
+      {"set_smooth_normals", guarded<node_set_smooth_normals>},
       {nullptr, nullptr}};
   luaL_newlib(L, node_methods);
   lua_setfield(L, -2, "__index");

@@ -133,6 +133,8 @@ struct LoaderContext {
   std::optional<bool> post_multiply;
   SceneDescription* description = nullptr;
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache;
+  /// mesh:set_smooth_normals's meshes, by the mesh smoothed and the angle.
+  std::map<std::pair<std::shared_ptr<const TriangleMesh>, float>, std::shared_ptr<const TriangleMesh>> smoothed_meshes;
   BackgroundFileHashes input_hashes;  ///< of description->inputs, for the resume fingerprints
   std::vector<std::weak_ptr<LuaNode>> nodes;  ///< every node made, to break cycles at the end
   std::set<std::string> warned;  ///< warnings given, so that a loop gives each once
