@@ -8,13 +8,16 @@ namespace mjray {
 namespace {
 
 /// Whether every sample's intensity is finite (so that zero times it is zero): a finite
-/// colour and a falloff 1 / (c0 + c1·d + c2·d²) that cannot divide by zero.
+/// colour and a falloff 1 / (c0 + c1·d + c2·d²) that cannot divide by zero (the sun has none).
 bool intensity_is_finite(const Light& light) {
   return std::visit(
       [](const auto& l) {
         const Color& c = l.colour;
-        return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && l.falloff[0] > 0 &&
-               l.falloff[1] >= 0 && l.falloff[2] >= 0 && std::isfinite(l.falloff[0] + l.falloff[1] + l.falloff[2]);
+        if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b)) return false;
+        if constexpr (requires { l.falloff; })
+          return l.falloff[0] > 0 && l.falloff[1] >= 0 && l.falloff[2] >= 0 &&
+                 std::isfinite(l.falloff[0] + l.falloff[1] + l.falloff[2]);
+        return true;
       },
       light);
 }
@@ -29,7 +32,7 @@ bool highlight_may_reach(const LocalShading& local, const ShadingFrame& frame, c
   // r·v = l·m for the mirror m of v about n: every direction l toward the light must make
   // r·v so small that its power rounds to zero. The directions lie within the cone around
   // the region's centre that holds its circumscribed sphere.
-  const std::array<Point3, 4> region = sample_region(light);
+  const std::array<Point3, 4> region = sample_region(light, point);
   double centre[3] = {0, 0, 0};
   for (const Point3& q : region)
     for (int a = 0; a < 3; ++a) centre[a] += double(q[a]) / 4;

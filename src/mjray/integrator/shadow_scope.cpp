@@ -16,7 +16,7 @@ ShadowScope::ShadowScope(const PrimitiveSet& prims, const Accelerator& accel, co
   // surface, by a clear angle. On the outer side (where the geometric normal points) the
   // surface itself cannot stand in the way, for a triangle or a convex shape; on the inner
   // side it is searched like everything else.
-  const std::array<Point3, 4> region = sample_region(light);
+  const std::array<Point3, 4> region = sample_region(light, si.point);
   int in_front = 0;
   for (const Point3& corner : region) {
     const Vector3 to = corner - si.point;

@@ -30,15 +30,16 @@ struct AreaLight {
     const float d = length(p - receiver);
     return {p, colour * attenuation(d), d};
   }
-  /// A ray from the point at parameters u_position in a uniformly drawn direction.
-  EmittedRay sample_le(Point2 u_position, Point2 u_direction) const {
-    return {{point_at(u_position.u, u_position.v), sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
-  }
   /// The point at parameters u, uniform over the parallelogram, with the whole light's
   /// intensity (the mean over the points is the light).
   EmissionPoint emission_point(Point2 u) const { return {point_at(u.u, u.v), colour}; }
   /// The parallelogram its samples lie in, corners in order around it.
-  std::array<Point3, 4> sample_region() const { return {corner, corner + edge1, corner + edge1 + edge2, corner + edge2}; }
+  std::array<Point3, 4> sample_region(const Point3& /*receiver*/) const { return {corner, corner + edge1, corner + edge1 + edge2, corner + edge2}; }
+  /// Photons leave it equally in every direction.
+  float emission_profile(const Vector3& /*w*/) const { return 1; }
+  EmissionCone emission_cone() const { return {}; }
+  /// A photon's flux after `d` along its first flight: the falloff in place of 1 / d².
+  float photon_falloff(float d) const { return d * d * attenuation(d); }
   /// Total flux, 4π · colour (before falloff).
   Color power() const { return isotropic_power(colour); }
 };

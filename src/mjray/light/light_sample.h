@@ -18,18 +18,18 @@ struct LightSample {
   float distance;  ///< |position − receiver|, as the falloff used it
 };
 
-/// A ray leaving a light, with the flux it carries when it stands for the whole light (divide
-/// by the number of rays drawn).
-struct EmittedRay {
-  Ray ray;  ///< unit direction
-  Color flux;
-};
-
 /// A point light leaves a light from, and the radiant intensity of the whole light there, the
 /// same in every direction: photons drawn from it carry intensity × solid angle / count.
 struct EmissionPoint {
   Point3 position;
   Color intensity;
+};
+
+/// The directions a light sends photons into from a point: within acos(1 − one_minus_cos)
+/// of `axis` (2: every direction).
+struct EmissionCone {
+  Vector3 axis{0, 0, 1};
+  float one_minus_cos = 2;
 };
 
 /// The falloff 1 / (c0 + c1·d + c2·d²) at distance d; 0 where the denominator is not positive.

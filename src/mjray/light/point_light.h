@@ -25,14 +25,15 @@ struct PointLight {
     const float d = length(position - receiver);
     return {position, colour * attenuation(d), d};
   }
-  /// A ray in a uniformly drawn direction.
-  EmittedRay sample_le(Point2 /*u_position*/, Point2 u_direction) const {
-    return {{position, sample_uniform_sphere(u_direction.u, u_direction.v)}, power()};
-  }
   /// The light's position and intensity (u is unused).
   EmissionPoint emission_point(Point2 /*u*/) const { return {position, colour}; }
   /// Where its samples lie: the position (four times, for the parallelogram shape of lights).
-  std::array<Point3, 4> sample_region() const { return {position, position, position, position}; }
+  std::array<Point3, 4> sample_region(const Point3& /*receiver*/) const { return {position, position, position, position}; }
+  /// Photons leave it equally in every direction.
+  float emission_profile(const Vector3& /*w*/) const { return 1; }
+  EmissionCone emission_cone() const { return {}; }
+  /// A photon's flux after `d` along its first flight: the falloff in place of 1 / d².
+  float photon_falloff(float d) const { return d * d * attenuation(d); }
   /// Total flux, 4π · colour (before falloff).
   Color power() const { return isotropic_power(colour); }
 };

@@ -446,6 +446,7 @@ void register_gr(lua_State* L) {
   lua_setglobal(L, "gr");
   register_textures(L);
   register_view(L);
+  register_lights(L);
 }
 
 }  // namespace mjray::lua

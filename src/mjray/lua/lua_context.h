@@ -163,6 +163,8 @@ void register_extensions(lua_State* L);
 void register_textures(lua_State* L);
 /// Adds gr.lens and gr.background to `gr`; needs register_gr first.
 void register_view(lua_State* L);
+/// Adds gr.spotlight and gr.sunlight to `gr`; needs register_gr first.
+void register_lights(lua_State* L);
 /// Adds what CS 488 scripts of both course generations expect: unpack, string.gfind,
 /// the scene folder on the require path, and a built-in readobj module.
 void install_compatibility(lua_State* L);

@@ -257,6 +257,12 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   world.primitives.shapes.reserve(size_t(expanded.shapes));
   Flattener(world, warnings).visit(*job.root, graph);
   mark_transmissive(world);
+  // A sun's shadow rays start beyond the scene, and its photons cover it.
+  if (world.primitive_count() > 0) {
+    const Bounds3 box = world.primitives.bounds();
+    for (Light& light : world.lights)
+      if (auto* sun = std::get_if<SunLight>(&light)) sun->fit_to_scene(box.centre(), length(box.diagonal()) / 2);
+  }
   return world;
 }
 

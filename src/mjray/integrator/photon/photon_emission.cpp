@@ -20,6 +20,7 @@ struct Cone {
   Vector3 axis{0, 0, 1};
   float one_minus_cos = 2;
 
+  static Cone of(const EmissionCone& c) { return {c.axis, c.one_minus_cos}; }
   static Cone toward(const Point3& from, const BoundingSphere& ball) {
     const Vector3 d = ball.centre - from;
     const float distance = length(d);
@@ -29,6 +30,12 @@ struct Cone {
   }
   float solid_angle() const { return kTwoPi * one_minus_cos; }
   bool contains(const Vector3& w) const { return one_minus_cos >= 2 || 1 - dot(w, axis) <= one_minus_cos; }
+  /// Whether the two cones share a direction.
+  bool overlaps(const Cone& other) const {
+    if (one_minus_cos >= 2 || other.one_minus_cos >= 2) return true;
+    const auto angle = [](float omc) { return std::acos(std::clamp(1 - omc, -1.f, 1.f)); };
+    return std::acos(std::clamp(dot(axis, other.axis), -1.f, 1.f)) <= angle(one_minus_cos) + angle(other.one_minus_cos);
+  }
   /// A direction uniform over the cone's solid angle.
   Vector3 sample(float u1, float u2) const {
     const float t = u1 * one_minus_cos;  // 1 − cos θ
@@ -60,6 +67,9 @@ BoundingSphere world_ball(const BoundingSphere& object, const Bounds3& object_bo
 
 /// The mean of a colour's channels: how much a light's photons weigh in the choice.
 float brightness(const Color& c) { return (c.r + c.g + c.b) / 3; }
+
+/// The disc across the sun's light that a ball presents to it.
+float cross_section(const BoundingSphere& ball) { return std::numbers::pi_v<float> * ball.radius * ball.radius; }
 
 }  // namespace
 
@@ -99,11 +109,21 @@ PhotonSource::PhotonSource(const std::vector<Light>& lights) : lights_(lights) {
 
 PhotonSource::PhotonSource(const std::vector<Light>& lights, std::vector<BoundingSphere> targets)
     : lights_(lights), targets_(std::move(targets)) {
-  // Each (light, target) in proportion to the light's flux toward the target from its centre.
+  // Each (light, target) in proportion to the light's flux toward the target: from its centre
+  // into the target's cone (none where that misses a spot's cone), or the sun's through the
+  // target's cross-section.
   for (uint32_t l = 0; l < lights.size(); ++l) {
-    const Point3 centre = emission_point(lights[l], {0.5f, 0.5f}).position;
     for (int t = 0; t < int(targets_.size()); ++t) {
-      const double share = double(brightness(power(lights[l]))) * Cone::toward(centre, targets_[size_t(t)]).solid_angle();
+      const BoundingSphere& target = targets_[size_t(t)];
+      double share = 0;
+      if (const SunLight* sun = distant_light(lights[l])) {
+        share = double(brightness(sun->colour)) * cross_section(target);
+      } else {
+        const EmissionPoint centre = emission_point(lights[l], {0.5f, 0.5f});
+        const Cone cone = Cone::toward(centre.position, target);
+        if (cone.overlaps(Cone::of(emission_cone(lights[l]))))
+          share = double(brightness(centre.intensity)) * cone.solid_angle();
+      }
       choices_.push_back({l, t, share});
     }
   }
@@ -123,9 +143,13 @@ EmittedPhoton PhotonSource::emit(uint64_t index, uint64_t count, RandomStream& r
   const size_t c = std::min(size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), u) - cumulative_.begin()),
                             choices_.size() - 1);
   const Choice& choice = choices_[c];
+  if (const SunLight* sun = distant_light(lights_[choice.light])) return emit_from_sun(*sun, c, count, random);
   const float u1 = random.uniform(), u2 = random.uniform();
-  const EmissionPoint from = emission_point(lights_[choice.light], {u1, u2});
-  const auto cone_of = [&](const Choice& k) { return k.target < 0 ? Cone{} : Cone::toward(from.position, targets_[size_t(k.target)]); };
+  const Light& light = lights_[choice.light];
+  const EmissionPoint from = emission_point(light, {u1, u2});
+  const auto cone_of = [&](const Choice& k) {
+    return k.target < 0 ? Cone::of(emission_cone(light)) : Cone::toward(from.position, targets_[size_t(k.target)]);
+  };
   const Cone cone = cone_of(choice);
   const float u3 = random.uniform(), u4 = random.uniform();
   const Vector3 direction = cone.sample(u3, u4);
@@ -136,7 +160,35 @@ EmittedPhoton PhotonSource::emit(uint64_t index, uint64_t count, RandomStream& r
     const Cone other = cone_of(choices_[k]);
     if (other.contains(direction)) density += choices_[k].probability / other.solid_angle();
   }
-  return {{from.position, direction}, from.intensity / float(double(count) * density), choice.light};
+  return {{from.position, direction}, from.intensity * (emission_profile(light, direction) / float(double(count) * density)),
+          choice.light};
+}
+
+EmittedPhoton PhotonSource::emit_from_sun(const SunLight& sun, size_t c, uint64_t count, RandomStream& random) const {
+  // A point across the disc the choice's ball (a target's, or the scene's) shows the sun, a
+  // direction from the sun's disc, and a start beyond the scene on the line through both.
+  const Choice& choice = choices_[c];
+  const auto ball_of = [&](const Choice& k) {
+    return k.target < 0 ? BoundingSphere{sun.scene_centre, sun.scene_radius} : targets_[size_t(k.target)];
+  };
+  const BoundingSphere ball = ball_of(choice);
+  const float u1 = random.uniform(), u2 = random.uniform();
+  const Point2 d = sample_concentric_disk(u1, u2);
+  const Basis across = orthonormal_basis(sun.direction);
+  const Point3 through = ball.centre + (across.tangent * d.u + across.bitangent * d.v) * ball.radius;
+  const float u3 = random.uniform(), u4 = random.uniform();
+  const Vector3 direction = -normalize(sun.toward({u3, u4}));
+  // The density of this point across the light over every disc of the same light.
+  double density = choice.probability / cross_section(ball);
+  for (size_t k = 0; k < choices_.size(); ++k) {
+    if (k == c || choices_[k].light != choice.light) continue;
+    const BoundingSphere other = ball_of(choices_[k]);
+    const Vector3 v = through - other.centre;
+    const Vector3 off_axis = v - sun.direction * dot(v, sun.direction);
+    if (dot(off_axis, off_axis) <= other.radius * other.radius) density += choices_[k].probability / cross_section(other);
+  }
+  return {{through - direction * sun.clearance(through), direction}, sun.colour / float(double(count) * density),
+          choice.light};
 }
 
 }  // namespace mjray

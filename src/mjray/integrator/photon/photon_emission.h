@@ -50,6 +50,8 @@ class PhotonSource {
     double probability;
   };
 
+  /// emit() for choice c, of a sun.
+  EmittedPhoton emit_from_sun(const SunLight& sun, size_t c, uint64_t count, RandomStream& random) const;
   /// Drops choices without flux and scales the rest to probabilities.
   void normalise_choices();
 

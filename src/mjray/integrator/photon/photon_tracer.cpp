@@ -40,7 +40,7 @@ struct Tracer {
       if (!hit) break;
       RandomStream random = photon_stream(seed, paths, index, uint64_t(bounce));
       if (!scattered) travelled += length(hit->point - ray.origin);
-      const float falloff = scattered ? 1 : travelled * travelled * attenuation(light, travelled);
+      const float falloff = scattered ? 1 : photon_falloff(light, travelled);
       const Material& material = world.materials[hit->material];
       const ShadingFrame frame = frame_facing(*hit, ray.direction);
       const LocalShading brdf = scattering(material, *hit);
