@@ -66,7 +66,7 @@ class ObjParser {
         continue;
       }
       // Compute the statement keyword and dispatch; "fo" is the obsolete spelling of "f".
-      // Everything else (mtllib, usemtl, o, g, s, l, p, vp, free-form) is geometry we ignore.
+      // Everything else (o, g, s, l, p, vp, free-form) is geometry we ignore.
       const char* keyword = p_;
       while (p_ != end_ && !is_blank(*p_) && !is_eol(*p_)) ++p_;
       const std::string_view statement(keyword, static_cast<size_t>(p_ - keyword));
@@ -79,6 +79,10 @@ class ObjParser {
         parse_uv();
       } else if (statement == "vn") {
         parse_normal();
+      } else if (statement == "usemtl") {
+        parse_usemtl();
+      } else if (statement == "mtllib") {
+        parse_mtllib();
       } else {
         skip_statement();
       }
@@ -219,6 +223,7 @@ class ObjParser {
       const MeshCorner corner = read_corner();
       if (corners >= 2) {
         mesh_.triangles.push_back({first, previous, corner});
+        if (material_ != kNoUse) mesh_.triangle_materials.push_back(material_);
         // A face of millions of corners is a few bytes of text each: check as it grows.
         if ((mesh_.triangles.size() & 4095) == 0) check_size();
       } else if (corners == 0) {
@@ -232,6 +237,49 @@ class ObjParser {
     }
     ++mesh_.polygon_count;
     skip_statement();
+  }
+
+  // The rest of the statement, blanks at its ends removed (a name may hold spaces).
+  std::string rest_of_statement() {
+    skip_blanks();
+    const char* start = p_;
+    while (!at_statement_end()) ++p_;
+    const char* stop = p_;
+    while (stop != start && is_blank(stop[-1])) --stop;
+    skip_statement();
+    return std::string(start, static_cast<size_t>(stop - start));
+  }
+
+  int line_number() const { return static_cast<int>(std::min<size_t>(line_, std::numeric_limits<int>::max())); }
+
+  // `usemtl name`: the faces that follow take that name's material.
+  void parse_usemtl() {
+    const int line = line_number();
+    const std::string name = rest_of_statement();
+    if (name.empty()) fail("usemtl needs a material name");
+    const auto index = static_cast<size_t>(
+        std::find(mesh_.material_names.begin(), mesh_.material_names.end(), name) - mesh_.material_names.begin());
+    if (index == mesh_.material_names.size()) {
+      mesh_.material_names.push_back(name);
+      mesh_.material_name_lines.push_back(line);
+    }
+    // The faces before the first usemtl had none.
+    if (material_ == kNoUse) mesh_.triangle_materials.assign(mesh_.triangles.size(), TriangleMesh::kNoMaterial);
+    material_ = static_cast<uint32_t>(index);
+  }
+
+  // `mtllib file ...`: the material files (names without spaces, as the format has them).
+  void parse_mtllib() {
+    const int line = line_number();
+    const std::string names = rest_of_statement();
+    size_t at = 0;
+    while (at < names.size()) {
+      while (at < names.size() && is_blank(names[at])) ++at;
+      size_t stop = at;
+      while (stop < names.size() && !is_blank(names[stop])) ++stop;
+      if (stop > at) mesh_.material_libraries.push_back({names.substr(at, stop - at), line});
+      at = stop;
+    }
   }
 
   // Reads `a`, `a/b`, `a//c` or `a/b/c`; an empty field after a slash means "absent".
@@ -298,6 +346,9 @@ class ObjParser {
   const std::string& source_name_;
   size_t line_ = 1;
   TriangleMesh mesh_;
+  /// The material name in force (an index into mesh_.material_names), kNoUse before any usemtl.
+  static constexpr uint32_t kNoUse = UINT32_MAX - 1;
+  uint32_t material_ = kNoUse;
   ObjSummary* summary_;
   size_t max_bytes_;
 };

@@ -1,6 +1,7 @@
 #pragma once
-/// Wavefront OBJ geometry: positions, normals, texture coordinates and faces (fan-triangulated).
-/// Materials, groups, lines, points and free-form statements are skipped.
+/// Wavefront OBJ geometry: positions, normals, texture coordinates and faces (fan-triangulated),
+/// and the material names (`mtllib`, `usemtl`) its faces use. Groups, lines, points and
+/// free-form statements are skipped.
 
 #include <cstdint>
 #include <filesystem>

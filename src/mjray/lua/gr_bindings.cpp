@@ -117,9 +117,8 @@ std::shared_ptr<const TriangleMesh> table_mesh(lua_State* L, const char* fn) {
   return mesh;
 }
 
-std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::string& name, const char* fn) {
+std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::filesystem::path& path, const char* fn) {
   LoaderContext& ctx = context(L);
-  const std::filesystem::path path = input_file(L, fn, name);
   const auto key = std::filesystem::weakly_canonical(path);
   auto& cached = ctx.mesh_cache[key];
   try {
@@ -134,8 +133,10 @@ std::shared_ptr<const TriangleMesh> file_mesh(lua_State* L, const std::string& n
 int gr_mesh(lua_State* L) {
   const char* fn = "gr.mesh";
   std::shared_ptr<const TriangleMesh> mesh;
+  std::filesystem::path file;
   if (lua_type(L, 2) == LUA_TSTRING) {
-    mesh = file_mesh(L, arg_string(L, 2, fn, "file name"), fn);
+    file = input_file(L, fn, arg_string(L, 2, fn, "file name"));
+    mesh = file_mesh(L, file, fn);
   } else if (lua_type(L, 2) == LUA_TTABLE) {
     if (lua_type(L, 3) != LUA_TTABLE) bad_argument(L, fn, 3, "faces", "a table of faces");
     mesh = table_mesh(L, fn);
@@ -146,6 +147,7 @@ int gr_mesh(lua_State* L) {
   new_node(L, fn);
   LuaNode& node = **test_shared<LuaNode>(L, -1, kNodeType);
   node.mesh = std::move(mesh);
+  node.mesh_file = std::move(file);
   if (from_tables) node.old_skeleton_geometry = "the table-form gr.mesh";
   return 1;
 }
@@ -253,7 +255,7 @@ class Snapshot {
   /// Deeper graphs are refused: copying and flattening recurse once per level.
   static constexpr int kMaxDepth = 1000;
 
-  explicit Snapshot(bool post_multiply) : post_multiply_(post_multiply) {}
+  Snapshot(lua_State* L, bool post_multiply) : L_(L), post_multiply_(post_multiply) {}
 
   /// The bytes of the copies made so far.
   size_t bytes() const { return bytes_; }
@@ -274,6 +276,9 @@ class Snapshot {
     node->node_from_object = live->node_from_object;
     node->mesh = live->mesh;
     node->material = frozen_material(live->material);
+    // Without a material of its own, a mesh takes its OBJ file's.
+    if (!node->material && live->mesh && !live->mesh->material_names.empty() && !live->mesh_file.empty())
+      node->mesh_parts = obj_mesh_parts(L_, live->mesh_file, live->mesh);
     for (const Transform& call : live->transform_calls)
       node->parent_from_node = post_multiply_ ? node->parent_from_node * call : call * node->parent_from_node;
     for (const auto& child : live->children) node->children.push_back(copy(child, depth + 1));
@@ -283,6 +288,7 @@ class Snapshot {
   }
 
  private:
+  lua_State* L_;
   bool post_multiply_;
   /// A copy of the material as it is now (a script may still change it, e.g. set a texture
   /// for the next frame); shared materials stay shared within the snapshot.
@@ -397,7 +403,7 @@ int gr_render(lua_State* L) {
 
   bool post = ctx.options.transform_order == TransformOrder::kPost;
   if (ctx.options.transform_order == TransformOrder::kAuto) post = automatic_transform_order(L, root, job.where);
-  Snapshot snapshot(post);
+  Snapshot snapshot(L, post);
   job.root = snapshot.copy(root);
   keep_bytes(L, snapshot.bytes() + job.lights.size() * sizeof(Light));
   job.post_multiplied = post;

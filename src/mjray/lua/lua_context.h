@@ -108,6 +108,7 @@ struct LuaNode {
   std::optional<Shape> shape;  ///< with `mesh`: what the node draws (neither: a group)
   Transform node_from_object;
   std::shared_ptr<const TriangleMesh> mesh;
+  std::filesystem::path mesh_file;  ///< the OBJ file of gr.mesh(name, file), whose materials it may use
   std::shared_ptr<Material> material;
   std::vector<Transform> transform_calls;  ///< in call order
   /// "the table-form gr.mesh" or "the gr.extendedmesh": geometry only old-skeleton and
@@ -133,6 +134,10 @@ struct LoaderContext {
   std::optional<bool> post_multiply;
   SceneDescription* description = nullptr;
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache;
+  /// The materials of each OBJ file whose own materials a node uses, by file (obj_materials.cpp).
+  std::map<std::filesystem::path, std::vector<std::shared_ptr<const Material>>> obj_materials;
+  /// Meshes split by material, by the mesh split.
+  std::map<std::shared_ptr<const TriangleMesh>, std::vector<MeshPart>> mesh_parts;
   /// mesh:set_smooth_normals's meshes, by the mesh smoothed and the angle.
   std::map<std::pair<std::shared_ptr<const TriangleMesh>, float>, std::shared_ptr<const TriangleMesh>> smoothed_meshes;
   BackgroundFileHashes input_hashes;  ///< of description->inputs, for the resume fingerprints
@@ -153,6 +158,11 @@ struct LoaderContext {
 LoaderContext& context(lua_State* L);
 /// Stores the context pointer in L's registry.
 void set_context(lua_State* L, LoaderContext* ctx);
+
+/// The parts a node draws for `mesh`, read from `obj` (its file): one per material its faces
+/// use, each with the material its file's `.mtl` gives (warnings name what is missing).
+std::vector<MeshPart> obj_mesh_parts(lua_State* L, const std::filesystem::path& obj,
+                                     const std::shared_ptr<const TriangleMesh>& mesh);
 
 /// Defines the `gr` table and the userdata types.
 void register_gr(lua_State* L);

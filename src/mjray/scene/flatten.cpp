@@ -152,11 +152,13 @@ class Flattener {
                                    : std::to_string(rest) + " more nodes have no material; rendering them grey too");
   }
 
-  uint32_t material_index(const SceneNode& node) {
-    const Material* key = node.material.get();
+  /// The index of `key` (null: the default grey, with a warning for the node).
+  uint32_t material_index(const SceneNode& node, const Material* key) {
     if (!key && nodes_without_material_.insert(&node).second && warnings_ &&
         nodes_without_material_.size() <= kNamedWithoutMaterial)
-      warnings_->push_back(node.where.to_string() + ": '" + node.name + "' has no material; rendering it grey");
+      warnings_->push_back(node.where.to_string() + ": '" + node.name + "' has " +
+                           (node.mesh_parts.empty() ? "no material" : "faces without a material in its OBJ file") +
+                           "; rendering " + (node.mesh_parts.empty() ? "it" : "them") + " grey");
     auto [it, inserted] = material_ids_.try_emplace(key, uint32_t(world_.materials.size()));
     if (inserted) world_.materials.push_back(key ? *key : default_material());
     return it->second;
@@ -168,9 +170,13 @@ class Flattener {
   }
 
   void emit(const SceneNode& node, const Transform& world_from_node) {
-    const uint32_t material = material_index(node);
     const Transform world_from_object = world_from_node * node.node_from_object;
     if (!fits_float(world_from_object.matrix()) || !fits_float(world_from_object.inverse_matrix())) overflow(node);
+    // A mesh that takes its file's materials: each material's faces as a mesh of their own.
+    for (const MeshPart& part : node.mesh_parts)
+      emit_mesh(node, *part.mesh, world_from_node, material_index(node, part.material.get()));
+    if (!node.mesh_parts.empty()) return;
+    const uint32_t material = material_index(node, node.material.get());
     if (node.mesh) {
       emit_mesh(node, *node.mesh, world_from_node, material);
       return;

@@ -22,6 +22,12 @@
 
 namespace mjray {
 
+/// The faces of a mesh that share one of its file's materials (null: none, rendered grey).
+struct MeshPart {
+  std::shared_ptr<const TriangleMesh> mesh;
+  std::shared_ptr<const Material> material;
+};
+
 /// One node of the scene DAG; a node may be the child of several parents.
 struct SceneNode {
   std::string name;
@@ -33,6 +39,9 @@ struct SceneNode {
   Transform node_from_object;    ///< places the unit shape (nh_sphere centre/radius, nh_box)
   std::shared_ptr<const TriangleMesh> mesh;
   std::shared_ptr<const Material> material;     ///< null: the default grey
+  /// A mesh node without `material` whose OBJ file gives its faces materials: `mesh` split by
+  /// material, drawn in its place.
+  std::vector<MeshPart> mesh_parts;
   std::vector<std::shared_ptr<const SceneNode>> children;
 };
 

@@ -1,0 +1,155 @@
+// The materials an OBJ file gives its faces: the `.mtl` files its `mtllib` statements name,
+// read within the sandbox, and each `usemtl` name mapped to an mjray material
+// (docs/scene-format.md, "OBJ materials").
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "mjray/geometry/mesh_split.h"
+#include "mjray/io/image_reader.h"
+#include "mjray/io/mtl_reader.h"
+#include "mjray/io/quantise.h"
+#include "mjray/lua/lua_arguments.h"
+#include "mjray/lua/lua_context.h"
+
+namespace mjray::lua {
+
+namespace {
+
+/// The largest material file read: a few kilobytes is usual.
+constexpr uintmax_t kMaxMtlBytes = uintmax_t(16) << 20;
+
+/// "OBJFILE:LINE: " for warnings about a statement of a file the scene read.
+std::string at(const std::filesystem::path& file, int line) { return file.string() + ":" + std::to_string(line) + ": "; }
+
+/// A file a material file names, relative to that file's folder, if the scene may read it and
+/// it exists; otherwise a warning and nothing.
+std::optional<std::filesystem::path> named_file(lua_State* L, const std::filesystem::path& from, int line,
+                                                const std::string& name, const char* statement) {
+  const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name)
+                                                                               : from.parent_path() / name;
+  if (!context(L).read_access.allows(path)) {
+    add_warning(L, at(from, line) + statement + " '" + name +
+                       "' is outside what the scene may read; run mjray with --allow-read DIR to let it");
+    return std::nullopt;
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    add_warning(L, at(from, line) + "cannot find " + statement + " '" + name + "'");
+    return std::nullopt;
+  }
+  record_input(L, path);
+  return path;
+}
+
+/// The materials of one .mtl file (none, with a warning, when it cannot be read).
+std::vector<MtlMaterial> read_library(lua_State* L, const std::filesystem::path& path) {
+  std::error_code ec;
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxMtlBytes) {
+    add_warning(L, path.string() + ": " + (ec ? "cannot read this material file" : "a material file over 16 MiB is not read"));
+    return {};
+  }
+  keep_bytes(L, size_t(size));
+  std::ifstream in(path, std::ios::binary);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  try {
+    return parse_mtl(text, path.string());
+  } catch (const SceneError& e) {
+    throw ArgumentError(std::string("gr.mesh: ") + e.what());
+  }
+}
+
+/// mjray's material for an MTL material (its kd texture already read, or null).
+Material material_from(const MtlMaterial& m, std::shared_ptr<const Texture> texture) {
+  PhongMaterial base;
+  base.kd = m.kd.value_or(Color(0.8f, 0.8f, 0.8f));
+  base.ks = m.ks.value_or(Color(0, 0, 0));
+  base.shininess = std::clamp(m.ns.value_or(10.f), 1.f, 10000.f);
+  base.texture = std::move(texture);
+  const bool see_through = (m.illum && (*m.illum == 4 || *m.illum == 6 || *m.illum == 7 || *m.illum == 9)) ||
+                           (m.d && *m.d < 1) || (m.tr && *m.tr > 0);
+  if (!see_through) return base;
+  // Clear glass: no diffuse part, its highlight kept; an index of 1 or less is the usual
+  // default of exporters, not a choice, so glass takes 1.5 there.
+  base.kd = Color(0, 0, 0);
+  base.texture = nullptr;
+  if (!m.ks) base.ks = Color(0.9f, 0.9f, 0.9f);
+  return FresnelMaterial{base, 1, m.ni && *m.ni > 1 ? *m.ni : 1.5f};
+}
+
+/// Warns once per file of the statements it holds that mjray does not show yet.
+void warn_unsupported(lua_State* L, const std::filesystem::path& library, const MtlMaterial& m) {
+  if (m.ke && !m.ke->is_black())
+    add_warning(L, at(library, m.line) + "'" + m.name + "' glows (Ke), which mjray does not show yet: it renders unlit");
+  if (m.map_d) add_warning(L, at(library, m.map_d->line) + "map_d (cut-outs) is not supported yet; the surface is whole");
+  if (m.map_bump) add_warning(L, at(library, m.map_bump->line) + "bump maps are not supported yet; the surface is smooth");
+  if (m.tf && !(m.tf->r == 1 && m.tf->g == 1 && m.tf->b == 1))
+    add_warning(L, at(library, m.line) + "'" + m.name + "' has a Tf colour, which mjray does not show yet: its glass is clear");
+}
+
+/// The material of each of the mesh's `usemtl` names (null where there is none).
+std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, const std::filesystem::path& obj,
+                                                                 const TriangleMesh& mesh) {
+  // Compute every material of the files the OBJ names, the first of a name winning.
+  std::map<std::string, std::pair<const MtlMaterial*, std::filesystem::path>> by_name;
+  std::vector<std::pair<std::filesystem::path, std::vector<MtlMaterial>>> libraries;
+  for (const MaterialLibrary& library : mesh.material_libraries)
+    if (auto path = named_file(L, obj, library.line, library.file, "the material file"))
+      libraries.emplace_back(*path, read_library(L, *path));
+  for (const auto& [path, materials] : libraries)
+    for (const MtlMaterial& m : materials) by_name.try_emplace(m.name, &m, path);
+  if (mesh.material_libraries.empty())
+    add_warning(L, at(obj, mesh.material_name_lines.front()) + "usemtl with no mtllib: its faces render grey");
+
+  // Compute each name's material, reading its texture within the sandbox.
+  std::vector<std::shared_ptr<const Material>> materials;
+  for (size_t i = 0; i < mesh.material_names.size(); ++i) {
+    const auto found = by_name.find(mesh.material_names[i]);
+    if (found == by_name.end()) {
+      if (!libraries.empty())  // (a file that could not be read has been warned of)
+        add_warning(L, at(obj, mesh.material_name_lines[i]) + "usemtl '" + mesh.material_names[i] +
+                           "' is in none of its material files: its faces render grey");
+      materials.push_back(nullptr);
+      continue;
+    }
+    const auto& [m, library] = found->second;
+    warn_unsupported(L, library, *m);
+    std::shared_ptr<const Texture> texture;
+    if (m->map_kd)
+      if (auto image = named_file(L, library, m->map_kd->line, m->map_kd->file, "the texture")) {
+        ImageTexture t;
+        t.image = std::move(*read_kept_image(L, "gr.mesh", *image, {}));
+        if (context(L).options.srgb_textures && !holds_linear_values(*image)) decode_srgb_8bit(t.image);
+        texture = std::make_shared<const Texture>(std::move(t));
+      }
+    materials.push_back(std::make_shared<const Material>(material_from(*m, std::move(texture))));
+  }
+  return materials;
+}
+
+}  // namespace
+
+std::vector<MeshPart> obj_mesh_parts(lua_State* L, const std::filesystem::path& obj,
+                                     const std::shared_ptr<const TriangleMesh>& mesh) {
+  // Compute the file's materials once per file, and the split once per mesh.
+  LoaderContext& ctx = context(L);
+  const auto key = std::filesystem::weakly_canonical(obj);
+  auto found = ctx.obj_materials.find(key);
+  if (found == ctx.obj_materials.end()) found = ctx.obj_materials.emplace(key, obj_file_materials(L, obj, *mesh)).first;
+  const std::vector<std::shared_ptr<const Material>>& materials = found->second;
+  auto& parts = ctx.mesh_parts[mesh];
+  if (parts.empty()) {
+    keep_bytes(L, mesh->memory_bytes());  // the parts hold the mesh again, at most
+    for (MaterialPart& part : split_by_material(*mesh))
+      parts.push_back({std::make_shared<const TriangleMesh>(std::move(part.mesh)),
+                       part.material < materials.size() ? materials[part.material] : nullptr});
+  }
+  return parts;
+}
+
+}  // namespace mjray::lua
