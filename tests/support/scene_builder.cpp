@@ -3,7 +3,16 @@
 #include <cmath>
 #include <numbers>
 
+#include "mjray/scene/flatten.h"
+
 namespace mjray::test {
+
+World flattened_world(std::vector<std::shared_ptr<const SceneNode>> nodes, std::vector<Light> lights) {
+  RenderJob job;
+  job.root = group(std::move(nodes));
+  job.lights = std::move(lights);
+  return flatten(job, nullptr);
+}
 
 TriangleMesh uv_sphere(int rings, int segments) {
   TriangleMesh m;

@@ -4,8 +4,12 @@
 #include <memory>
 
 #include "mjray/scene/scene_description.h"
+#include "mjray/scene/world.h"
 
 namespace mjray::test {
+
+/// The world of `nodes` under `lights`, flattened as the renderer flattens a job.
+World flattened_world(std::vector<std::shared_ptr<const SceneNode>> nodes, std::vector<Light> lights);
 
 inline std::shared_ptr<SceneNode> group(std::vector<std::shared_ptr<const SceneNode>> children,
                                         Transform parent_from_node = {}) {

@@ -24,22 +24,13 @@ struct SpotLight {
 
   float attenuation(float d) const { return falloff_attenuation(falloff, d); }
   /// The fraction of `colour` sent along the unit direction `w` (from the light).
-  float profile(const Vector3& w) const {
-    const float cos_theta = dot(w, direction);
-    if (cos_theta >= std::cos(cone)) return 1;
-    if (!(penumbra > 0) || cos_theta <= std::cos(cone + penumbra)) return 0;
-    const float t = std::clamp((cone + penumbra - std::acos(std::clamp(cos_theta, -1.f, 1.f))) / penumbra, 0.f, 1.f);
-    return t * t * (3 - 2 * t);
-  }
+  float profile(const Vector3& w) const;
 
   /// A spot light needs one sample, as a point light.
   int samples_per_axis(int /*requested*/) const { return 1; }
-  /// The light arriving at `receiver` (u is unused).
-  LightSample sample_li(const Point3& receiver, Point2 /*u*/) const {
-    const float d = length(receiver - position);
-    const float shown = d > 0 ? profile((receiver - position) / d) : 0;
-    return {position, colour * (attenuation(d) * shown), d};
-  }
+  /// The light arriving at `receiver` (u is unused). Out of line, as the sun's: the loops
+  /// over light samples inline the point and area lights' instead.
+  LightSample sample_li(const Point3& receiver, Point2 u) const;
   std::array<Point3, 4> sample_region(const Point3& /*receiver*/) const { return {position, position, position, position}; }
 
   /// Photons: from the position, only into the outer cone, each carrying profile × intensity.

@@ -39,11 +39,8 @@ struct SunLight {
   float clearance(const Point3& receiver) const { return length(receiver - scene_centre) + 2 * scene_radius + 1; }
 
   int samples_per_axis(int requested) const { return half_angle > 0 ? requested : 1; }
-  /// Light from the point of the disc at u, placed beyond the scene.
-  LightSample sample_li(const Point3& receiver, Point2 u) const {
-    const Vector3 w = toward(u) * clearance(receiver);
-    return {receiver + w, colour, length(w)};
-  }
+  /// Light from the point of the disc at u, placed beyond the scene (out of line: see SpotLight).
+  LightSample sample_li(const Point3& receiver, Point2 u) const;
   /// The square around the disc's points, as seen from `receiver`.
   std::array<Point3, 4> sample_region(const Point3& receiver) const {
     const Vector3 axis = -direction;

@@ -122,16 +122,8 @@ TEST(DensityEstimate, UniformPhotonsGiveTheirFluxPerArea) {
   EXPECT_EQ(irradiance_estimate(map, {0, 3, 0}, {0, 1, 0}, {64, 0.5f}), Color(0, 0, 0));
 }
 
-/// The world of `nodes` under `lights`.
-World world_of(std::vector<std::shared_ptr<const SceneNode>> nodes, std::vector<Light> lights) {
-  RenderJob job;
-  job.root = test::group(std::move(nodes));
-  job.lights = std::move(lights);
-  return flatten(job, nullptr);
-}
-
 TEST(PhotonEmission, FluxOfEveryDirectionAddsUpToTheLightsPower) {
-  const World world = world_of({}, {PointLight{{0, 1, 0}, {1, 0.5f, 0.25f}, {1, 0, 0}},
+  const World world = test::flattened_world({}, {PointLight{{0, 1, 0}, {1, 0.5f, 0.25f}, {1, 0, 0}},
                                     AreaLight{{0, 4, 0}, {1, 0, 0}, {0, 0, 1}, {0.3f, 0.3f, 0.3f}, {1, 0, 0}}});
   const PhotonSource source(world.lights);
   constexpr uint64_t kCount = 20000;
@@ -156,7 +148,7 @@ TEST(PhotonEmission, AimedPhotonsCarryTheFluxOfTheirConesOnceWhereConesOverlap) 
   // Two glass balls seen from the light at overlapping angles, and one alone.
   const Material glass = FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, 1.5f};
   const PointLight light{{0, 0, 0}, {1, 1, 1}, {1, 0, 0}};
-  const World world = world_of({test::sphere({0, 0, 5}, 1, glass), test::sphere({0.8f, 0, 5.5f}, 1, glass),
+  const World world = test::flattened_world({test::sphere({0, 0, 5}, 1, glass), test::sphere({0.8f, 0, 5.5f}, 1, glass),
                                 test::sphere({0, -6, 0}, 2, glass), test::sphere({3, 3, 3}, 1)},
                                {light});
   const std::vector<BoundingSphere> targets = specular_targets(world);
@@ -191,7 +183,7 @@ TEST(PhotonEmission, AimedPhotonsCarryTheFluxOfTheirConesOnceWhereConesOverlap) 
 
 TEST(PhotonEmission, BallsAroundShapesHoldThemTightly) {
   const Material glass = FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, 1.5f};
-  const World world = world_of({test::sphere({1, 2, 3}, 0.5f, glass), test::box({0, 0, 0}, {1, 2, 2}, glass)}, {});
+  const World world = test::flattened_world({test::sphere({1, 2, 3}, 0.5f, glass), test::box({0, 0, 0}, {1, 2, 2}, glass)}, {});
   const auto balls = specular_targets(world);
   ASSERT_EQ(balls.size(), 2u);
   EXPECT_NEAR(balls[0].radius, 0.5f, 1e-3f);
@@ -203,7 +195,7 @@ TEST(PhotonEmission, BallsAroundShapesHoldThemTightly) {
 /// A floor, a glass ball and a mirror-ish ball under a point light: both maps store photons.
 World photon_world() {
   const Material glass = FresnelMaterial{{{0, 0, 0}, {0, 0, 0}, 1}, 1, 1.5f};
-  return world_of({test::mesh(test::floor_quad(10), PhongMaterial{{0.8f, 0.8f, 0.8f}, {0, 0, 0}, 1}),
+  return test::flattened_world({test::mesh(test::floor_quad(10), PhongMaterial{{0.8f, 0.8f, 0.8f}, {0, 0, 0}, 1}),
                    test::sphere({0, 1.5f, 0}, 1, glass),
                    test::sphere({2, 1, 0}, 1, ReflectiveMaterial{{{0.5f, 0.2f, 0.2f}, {0, 0, 0}, 1}, 0.5f})},
                   {PointLight{{0, 6, 1}, {1, 1, 1}, {1, 0, 0}}});

@@ -119,21 +119,13 @@ TEST(SunLight, ADiscOfTheSunsSizeSoftensTheShadowEdgeOverHeightTimesItsAngle) {
   EXPECT_LT(under(-0.5f * half_width), under(0) - 0.1f);
 }
 
-/// The world of `nodes` under `lights`, as the renderer builds it.
-World world_of(std::vector<std::shared_ptr<const SceneNode>> nodes, std::vector<Light> lights) {
-  RenderJob job;
-  job.root = test::group(std::move(nodes));
-  job.lights = std::move(lights);
-  return flatten(job, nullptr);
-}
-
 TEST(SpotAndSunPhotons, ASpotsPhotonsCarryItsIntensityTimesTheConesSolidAngle) {
   SpotLight spot;
   spot.position = {0, 3, 0};
   spot.direction = normalize(Vector3(0.3f, -1, 0.1f));
   spot.colour = {1, 0.5f, 0.25f};
   spot.cone = 35 * kDegree;
-  const World world = world_of({test::sphere({0, 0, 0}, 1)}, {spot});
+  const World world = test::flattened_world({test::sphere({0, 0, 0}, 1)}, {spot});
   const PhotonSource source(world.lights);
   constexpr uint64_t kCount = 50000;
   Color total;
@@ -152,7 +144,7 @@ TEST(SpotAndSunPhotons, TheSunsPhotonsCrossTheSceneInParallelCarryingItsIrradian
   SunLight sun;
   sun.direction = normalize(Vector3(1, -2, 0.5f));
   sun.colour = {2, 1, 0.5f};
-  const World world = world_of({test::box({-1, 0, -2}, {3, 1, 2})}, {sun});
+  const World world = test::flattened_world({test::box({-1, 0, -2}, {3, 1, 2})}, {sun});
   const SunLight& fitted = std::get<SunLight>(world.lights.at(0));
   EXPECT_NEAR(fitted.scene_radius, 0.5f * std::sqrt(16.f + 1 + 16), 1e-3f);
   const PhotonSource source(world.lights);
@@ -180,7 +172,7 @@ TEST(SpotAndSunPhotons, AimedSunPhotonsCarryTheFluxThroughTheUnionOfTheTargetsOn
   SunLight sun;
   sun.direction = {0, -1, 0};
   sun.colour = {1, 1, 1};
-  const World world = world_of({test::sphere({0, 0, 0}, 1, glass), test::sphere({1, 3, 0}, 1, glass),
+  const World world = test::flattened_world({test::sphere({0, 0, 0}, 1, glass), test::sphere({1, 3, 0}, 1, glass),
                                 test::sphere({6, 0, 0}, 0.5f, glass)},
                                {sun});
   const std::vector<BoundingSphere> targets = specular_targets(world);

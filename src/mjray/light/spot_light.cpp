@@ -1,0 +1,20 @@
+#include "mjray/light/spot_light.h"
+
+namespace mjray {
+
+float SpotLight::profile(const Vector3& w) const {
+  const float cos_theta = dot(w, direction);
+  if (cos_theta >= std::cos(cone)) return 1;
+  if (!(penumbra > 0) || cos_theta <= std::cos(cone + penumbra)) return 0;
+  // A smoothstep in the angle across the penumbra.
+  const float t = std::clamp((cone + penumbra - std::acos(std::clamp(cos_theta, -1.f, 1.f))) / penumbra, 0.f, 1.f);
+  return t * t * (3 - 2 * t);
+}
+
+LightSample SpotLight::sample_li(const Point3& receiver, Point2 /*u*/) const {
+  const float d = length(receiver - position);
+  const float shown = d > 0 ? profile((receiver - position) / d) : 0;
+  return {position, colour * (attenuation(d) * shown), d};
+}
+
+}  // namespace mjray
