@@ -104,6 +104,15 @@ TEST_F(LuaObjMaterials, WhatIsMissingOrOutsideIsWarnedOfWithItsFileAndLineAndRen
   EXPECT_NE(all.find((dir_ / "halves.mtl").string() + ":1: 'left' glows (Ke), which mjray does not show yet"),
             std::string::npos) << all;
 
+  // Names from the files reach the terminal escaped.
+  write("evil.obj", "mtllib halves.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \x1b]2;owned\x07\nf 1 2 3\n");
+  d = scene("evil.obj");
+  ASSERT_FALSE(d.warnings.empty());
+  for (const std::string& w : d.warnings) {
+    EXPECT_EQ(w.find('\x1b'), std::string::npos) << w;
+    EXPECT_EQ(w.find('\x07'), std::string::npos) << w;
+  }
+
   // A material file outside the scene's reach is not read, and nothing of it is told.
   write("outside.obj", std::string("mtllib /etc/passwd\n") + (kTwoHalves + 18));
   d = scene("outside.obj");

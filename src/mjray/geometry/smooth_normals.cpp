@@ -21,6 +21,9 @@ struct PositionEqual {
   bool operator()(const Point3& a, const Point3& b) const { return a.x == b.x && a.y == b.y && a.z == b.z; }
 };
 
+/// Above this many faces at a vertex, its corners are not compared pairwise.
+constexpr uint32_t kMaxExactValence = 64;
+
 /// The angle of the triangle at corner a, between the edges to b and to c.
 float corner_angle(const Point3& a, const Point3& b, const Point3& c) {
   const Vector3 u = b - a, v = c - a;
@@ -69,19 +72,48 @@ TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float max_angle_degre
     }
   for (size_t v = 0; v + 1 < start.size(); ++v) {
     const size_t first_normal = out.normals.size();
-    for (uint32_t i = start[v]; i < start[v + 1]; ++i) {
+    const uint32_t begin = start[v], end = start[v + 1];
+    // The normal of the faces at this vertex within the angle of `own`.
+    const auto smoothed = [&](const Vector3& own) {
+      Vector3 sum;
+      for (uint32_t j = begin; j < end; ++j) {
+        const Vector3& other = face_normals[around[j] / 3];
+        if (other != Vector3{} && dot(own, other) >= cos_max) sum += other * angle_at[around[j]];
+      }
+      const float len = length(sum);
+      return len > 0 ? Normal3(sum / len) : Normal3(own);
+    };
+    // A vertex shared by very many faces (a fan of thousands) would cost their square: its
+    // faces within the angle of their mean share one normal, the rest are flat.
+    const bool crowded = end - begin > kMaxExactValence;
+    Vector3 mean;
+    int32_t mean_index = -1;
+    if (crowded) {
+      for (uint32_t j = begin; j < end; ++j) mean += face_normals[around[j] / 3] * angle_at[around[j]];
+      mean = Vector3(smoothed(length(mean) > 0 ? normalize(mean) : Vector3{}));
+    }
+    for (uint32_t i = begin; i < end; ++i) {
       const uint32_t corner = around[i];
       const Vector3& own = face_normals[corner / 3];
       MeshCorner& target = out.triangles[corner / 3][corner % 3];
       target.normal = -1;
       if (own == Vector3{}) continue;
-      Vector3 sum;
-      for (uint32_t j = start[v]; j < start[v + 1]; ++j) {
-        const Vector3& other = face_normals[around[j] / 3];
-        if (other != Vector3{} && dot(own, other) >= cos_max) sum += other * angle_at[around[j]];
+      if (crowded) {
+        // The shared normal once, or the face's own.
+        if (mean == Vector3{} || dot(own, mean) < cos_max) {
+          target.normal = int32_t(out.normals.size());
+          out.normals.push_back(Normal3(own));
+          continue;
+        }
+        if (mean_index < 0) {
+          mean_index = int32_t(out.normals.size());
+          out.normals.push_back(Normal3(mean));
+        }
+        target.normal = mean_index;
+        continue;
       }
-      const float len = length(sum);
-      const Normal3 n = len > 0 ? Normal3(sum / len) : Normal3(own);
+      // Corners of one vertex that come out equal share one normal.
+      const Normal3 n = smoothed(own);
       size_t found = first_normal;
       while (found < out.normals.size() && !(out.normals[found] == n)) ++found;
       if (found == out.normals.size()) out.normals.push_back(n);

@@ -11,7 +11,9 @@ namespace mjray {
 /// (so a crease sharper than that stays sharp, and 180 smooths everything). Positions equal
 /// to the last bit count as one vertex, so that a mesh written as separate triangles smooths
 /// too. The mesh's own normals are replaced; positions, uvs and faces are kept. A degenerate
-/// face (no area) keeps no normal, and is shaded flat. `max_angle_degrees` must be in (0, 180].
+/// face (no area) keeps no normal, and is shaded flat. At a vertex of more than 64 faces (the
+/// tip of a fan) the faces within the angle of their mean share one normal and the rest stay
+/// flat, so that time stays linear in the faces. `max_angle_degrees` must be in (0, 180].
 TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float max_angle_degrees);
 
 }  // namespace mjray

@@ -45,8 +45,11 @@ struct TriangleMesh {
 
   /// The bytes its arrays hold.
   size_t memory_bytes() const {
+    size_t names = 0;
+    for (const std::string& name : material_names) names += sizeof(name) + name.size() + sizeof(int);
+    for (const MaterialLibrary& library : material_libraries) names += sizeof(library) + library.file.size();
     return positions.size() * sizeof(Point3) + normals.size() * sizeof(Normal3) + uvs.size() * sizeof(Point2) +
-           triangles.size() * sizeof(triangles[0]) + triangle_materials.size() * sizeof(uint32_t);
+           triangles.size() * sizeof(triangles[0]) + triangle_materials.size() * sizeof(uint32_t) + names;
   }
 };
 

@@ -28,7 +28,8 @@ std::vector<std::string_view> words_of(std::string_view line) {
 
 class MtlParser {
  public:
-  MtlParser(const std::string& source_name) : source_name_(source_name) {}
+  MtlParser(const std::string& source_name, std::vector<std::string>* warnings)
+      : source_name_(source_name), warnings_(warnings) {}
 
   void statement(const std::vector<std::string_view>& w, int line) {
     line_ = line;
@@ -47,15 +48,16 @@ class MtlParser {
     if (!mapped) return;
     if (materials_.empty()) fail("'" + std::string(key) + "' before any newmtl");
     MtlMaterial& m = materials_.back();
-    if (key == "Kd") m.kd = colour(w);
-    else if (key == "Ks") m.ks = colour(w);
-    else if (key == "Ke") m.ke = colour(w);
-    else if (key == "Tf") m.tf = colour(w);
+    if (key == "Kd" || key == "Ks" || key == "Ke" || key == "Tf") {
+      const std::optional<Color> c = colour(w);
+      if (!c) return;
+      (key == "Kd" ? m.kd : key == "Ks" ? m.ks : key == "Ke" ? m.ke : m.tf) = *c;
+    }
     else if (key == "Ns") m.ns = number(w, 1);
     else if (key == "Ni") m.ni = number(w, 1);
     else if (key == "d") m.d = number(w, w.size() > 2 && w[1] == "-halo" ? 2 : 1);
     else if (key == "Tr") m.tr = number(w, 1);
-    else if (key == "illum") m.illum = int(number(w, 1));
+    else if (key == "illum") m.illum = illumination(w);
     else if (key == "map_Kd") m.map_kd = map(w);
     else if (key == "map_d") m.map_d = map(w);
     else m.map_bump = map(w);
@@ -79,13 +81,25 @@ class MtlParser {
     return value;
   }
 
-  /// `K r g b`, or `K r` for a grey; `K spectral ...` and `K xyz ...` are not read.
-  Color colour(const std::vector<std::string_view>& w) const {
-    if (w.size() > 1 && (w[1] == "spectral" || w[1] == "xyz"))
-      fail("'" + std::string(w[0]) + " " + std::string(w[1]) + "' colours are not supported; give r g b");
+  /// `K r g b`, or `K r` for a grey; `K spectral ...` and `K xyz ...` are not read (a warning).
+  std::optional<Color> colour(const std::vector<std::string_view>& w) const {
+    if (w.size() > 1 && (w[1] == "spectral" || w[1] == "xyz")) {
+      if (warnings_)
+        warnings_->push_back(source_name_ + ":" + std::to_string(line_) + ": '" + std::string(w[0]) + " " +
+                             std::string(w[1]) + "' colours are not read; give r g b");
+      return std::nullopt;
+    }
     const float r = number(w, 1);
-    if (w.size() < 4) return {r, r, r};
-    return {r, number(w, 2), number(w, 3)};
+    if (w.size() == 2) return Color{r, r, r};
+    if (w.size() != 4) fail("'" + std::string(w[0]) + "' needs 1 or 3 numbers, found " + std::to_string(w.size() - 1));
+    return Color{r, number(w, 2), number(w, 3)};
+  }
+
+  /// `illum n`, a whole number from 0 to 10.
+  int illumination(const std::vector<std::string_view>& w) const {
+    const float n = number(w, 1);
+    if (!(n >= 0 && n <= 10 && n == std::floor(n))) fail("'illum' needs a whole number from 0 to 10");
+    return int(n);
   }
 
   MtlMap map(const std::vector<std::string_view>& w) const {
@@ -96,14 +110,16 @@ class MtlParser {
   [[noreturn]] void fail(const std::string& problem) const { throw SceneError(FileLocation{source_name_, line_}, problem); }
 
   const std::string& source_name_;
+  std::vector<std::string>* warnings_;
   int line_ = 0;
   std::vector<MtlMaterial> materials_;
 };
 
 }  // namespace
 
-std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& source_name) {
-  MtlParser parser(source_name);
+std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& source_name,
+                                   std::vector<std::string>* warnings) {
+  MtlParser parser(source_name, warnings);
   int line = 0;
   size_t at = 0;
   while (at <= text.size()) {

@@ -28,9 +28,11 @@ struct MtlMaterial {
   std::optional<MtlMap> map_kd, map_d, map_bump;
 };
 
-/// Parses MTL text; `source_name` is used in errors. Throws SceneError naming file and line for
-/// a statement mjray maps whose values are malformed; other statements (Ka, map_Ks, PBR
-/// extensions, ...) are passed over.
-std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& source_name);
+/// Parses MTL text; `source_name` is used in errors and warnings. Throws SceneError naming file
+/// and line for a statement mjray maps whose values are malformed; other statements (Ka,
+/// map_Ks, PBR extensions, ...) are passed over. Colours given as `spectral` or `xyz` are not
+/// read: each adds "FILE:LINE: ..." to `warnings`.
+std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& source_name,
+                                   std::vector<std::string>* warnings = nullptr);
 
 }  // namespace mjray

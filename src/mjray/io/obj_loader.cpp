@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <system_error>
+#include <unordered_map>
 
 #include "mjray/core/error.h"
 
@@ -252,16 +253,20 @@ class ObjParser {
 
   int line_number() const { return static_cast<int>(std::min<size_t>(line_, std::numeric_limits<int>::max())); }
 
-  // `usemtl name`: the faces that follow take that name's material.
+  // `usemtl name`: the faces that follow take that name's material. A name of several words
+  // is kept with single spaces, as MTL's `newmtl` names are.
   void parse_usemtl() {
     const int line = line_number();
-    const std::string name = rest_of_statement();
+    std::string name;
+    for (const char c : rest_of_statement())
+      if (!is_blank(c) || (!name.empty() && name.back() != ' ')) name += is_blank(c) ? ' ' : c;
     if (name.empty()) fail("usemtl needs a material name");
-    const auto index = static_cast<size_t>(
-        std::find(mesh_.material_names.begin(), mesh_.material_names.end(), name) - mesh_.material_names.begin());
-    if (index == mesh_.material_names.size()) {
+    const auto [found, added] = material_index_.try_emplace(name, mesh_.material_names.size());
+    const size_t index = found->second;
+    if (added) {
       mesh_.material_names.push_back(name);
       mesh_.material_name_lines.push_back(line);
+      check_size();
     }
     // The faces before the first usemtl had none.
     if (material_ == kNoUse) mesh_.triangle_materials.assign(mesh_.triangles.size(), TriangleMesh::kNoMaterial);
@@ -280,6 +285,7 @@ class ObjParser {
       if (stop > at) mesh_.material_libraries.push_back({names.substr(at, stop - at), line});
       at = stop;
     }
+    check_size();
   }
 
   // Reads `a`, `a/b`, `a//c` or `a/b/c`; an empty field after a slash means "absent".
@@ -349,6 +355,7 @@ class ObjParser {
   /// The material name in force (an index into mesh_.material_names), kNoUse before any usemtl.
   static constexpr uint32_t kNoUse = UINT32_MAX - 1;
   uint32_t material_ = kNoUse;
+  std::unordered_map<std::string, size_t> material_index_;  ///< index of each usemtl name
   ObjSummary* summary_;
   size_t max_bytes_;
 };

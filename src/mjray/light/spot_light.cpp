@@ -3,11 +3,12 @@
 namespace mjray {
 
 float SpotLight::profile(const Vector3& w) const {
-  const float cos_theta = dot(w, direction);
-  if (cos_theta >= std::cos(cone)) return 1;
-  if (!(penumbra > 0) || cos_theta <= std::cos(cone + penumbra)) return 0;
+  // The angle from the axis, accurate for the narrowest cones (acos is not, near 1).
+  const float theta = std::atan2(length(cross(w, direction)), dot(w, direction));
+  if (theta <= cone) return 1;
+  if (!(penumbra > 0) || theta >= cone + penumbra) return 0;
   // A smoothstep in the angle across the penumbra.
-  const float t = std::clamp((cone + penumbra - std::acos(std::clamp(cos_theta, -1.f, 1.f))) / penumbra, 0.f, 1.f);
+  const float t = std::clamp((cone + penumbra - theta) / penumbra, 0.f, 1.f);
   return t * t * (3 - 2 * t);
 }
 

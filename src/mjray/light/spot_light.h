@@ -36,7 +36,11 @@ struct SpotLight {
   /// Photons: from the position, only into the outer cone, each carrying profile × intensity.
   EmissionPoint emission_point(Point2 /*u*/) const { return {position, colour}; }
   float emission_profile(const Vector3& w) const { return profile(w); }
-  EmissionCone emission_cone() const { return {direction, 1 - std::cos(std::min(cone + penumbra, std::numbers::pi_v<float>))}; }
+  /// 1 − cos θ as 2 sin²(θ/2), exact for the narrowest cones.
+  EmissionCone emission_cone() const {
+    const float half = std::sin(std::min(cone + penumbra, std::numbers::pi_v<float>) / 2);
+    return {direction, 2 * half * half};
+  }
   /// A photon's flux after `d` along its first flight: the falloff in place of 1 / d².
   float photon_falloff(float d) const { return d * d * attenuation(d); }
   /// The flux into the outer cone at full intensity (an upper bound, for choosing lights).

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "mjray/core/error.h"
 #include "mjray/geometry/mesh_split.h"
 #include "mjray/io/image_reader.h"
 #include "mjray/io/mtl_reader.h"
@@ -26,6 +27,9 @@ constexpr uintmax_t kMaxMtlBytes = uintmax_t(16) << 20;
 /// "OBJFILE:LINE: " for warnings about a statement of a file the scene read.
 std::string at(const std::filesystem::path& file, int line) { return file.string() + ":" + std::to_string(line) + ": "; }
 
+/// A name from a file, quoted for a warning: its control characters escaped, as print's are.
+std::string quoted(const std::string& name) { return "'" + escape_control_characters(name, false) + "'"; }
+
 /// A file a material file names, relative to that file's folder, if the scene may read it and
 /// it exists; otherwise a warning and nothing.
 std::optional<std::filesystem::path> named_file(lua_State* L, const std::filesystem::path& from, int line,
@@ -33,13 +37,13 @@ std::optional<std::filesystem::path> named_file(lua_State* L, const std::filesys
   const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name)
                                                                                : from.parent_path() / name;
   if (!context(L).read_access.allows(path)) {
-    add_warning(L, at(from, line) + statement + " '" + name +
-                       "' is outside what the scene may read; run mjray with --allow-read DIR to let it");
+    add_warning(L, at(from, line) + statement + " " + quoted(name) +
+                       " is outside what the scene may read; run mjray with --allow-read DIR to let it");
     return std::nullopt;
   }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    add_warning(L, at(from, line) + "cannot find " + statement + " '" + name + "'");
+    add_warning(L, at(from, line) + "cannot find " + statement + " " + quoted(name));
     return std::nullopt;
   }
   record_input(L, path);
@@ -57,11 +61,17 @@ std::vector<MtlMaterial> read_library(lua_State* L, const std::filesystem::path&
   keep_bytes(L, size_t(size));
   std::ifstream in(path, std::ios::binary);
   const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::vector<MtlMaterial> materials;
+  std::vector<std::string> warnings;
   try {
-    return parse_mtl(text, path.string());
+    materials = parse_mtl(text, path.string(), &warnings);
   } catch (const SceneError& e) {
     throw ArgumentError(std::string("gr.mesh: ") + e.what());
   }
+  for (const std::string& warning : warnings) add_warning(L, escape_control_characters(warning, false));
+  // What the parsed materials hold beyond the text: a few hundred bytes for a short `newmtl`.
+  keep_bytes(L, materials.size() * sizeof(MtlMaterial));
+  return materials;
 }
 
 /// mjray's material for an MTL material (its kd texture already read, or null).
@@ -85,24 +95,24 @@ Material material_from(const MtlMaterial& m, std::shared_ptr<const Texture> text
 /// Warns once per file of the statements it holds that mjray does not show yet.
 void warn_unsupported(lua_State* L, const std::filesystem::path& library, const MtlMaterial& m) {
   if (m.ke && !m.ke->is_black())
-    add_warning(L, at(library, m.line) + "'" + m.name + "' glows (Ke), which mjray does not show yet: it renders unlit");
+    add_warning(L, at(library, m.line) + quoted(m.name) + " glows (Ke), which mjray does not show yet: it renders unlit");
   if (m.map_d) add_warning(L, at(library, m.map_d->line) + "map_d (cut-outs) is not supported yet; the surface is whole");
   if (m.map_bump) add_warning(L, at(library, m.map_bump->line) + "bump maps are not supported yet; the surface is smooth");
   if (m.tf && !(m.tf->r == 1 && m.tf->g == 1 && m.tf->b == 1))
-    add_warning(L, at(library, m.line) + "'" + m.name + "' has a Tf colour, which mjray does not show yet: its glass is clear");
+    add_warning(L, at(library, m.line) + quoted(m.name) + " has a Tf colour, which mjray does not show yet: its glass is clear");
 }
 
 /// The material of each of the mesh's `usemtl` names (null where there is none).
 std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, const std::filesystem::path& obj,
                                                                  const TriangleMesh& mesh) {
   // Compute every material of the files the OBJ names, the first of a name winning.
-  std::map<std::string, std::pair<const MtlMaterial*, std::filesystem::path>> by_name;
+  std::map<std::string, std::pair<const MtlMaterial*, size_t>> by_name;  // the material, its library
   std::vector<std::pair<std::filesystem::path, std::vector<MtlMaterial>>> libraries;
   for (const MaterialLibrary& library : mesh.material_libraries)
     if (auto path = named_file(L, obj, library.line, library.file, "the material file"))
       libraries.emplace_back(*path, read_library(L, *path));
-  for (const auto& [path, materials] : libraries)
-    for (const MtlMaterial& m : materials) by_name.try_emplace(m.name, &m, path);
+  for (size_t l = 0; l < libraries.size(); ++l)
+    for (const MtlMaterial& m : libraries[l].second) by_name.try_emplace(m.name, &m, l);
   if (mesh.material_libraries.empty())
     add_warning(L, at(obj, mesh.material_name_lines.front()) + "usemtl with no mtllib: its faces render grey");
 
@@ -112,12 +122,13 @@ std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, co
     const auto found = by_name.find(mesh.material_names[i]);
     if (found == by_name.end()) {
       if (!libraries.empty())  // (a file that could not be read has been warned of)
-        add_warning(L, at(obj, mesh.material_name_lines[i]) + "usemtl '" + mesh.material_names[i] +
-                           "' is in none of its material files: its faces render grey");
+        add_warning(L, at(obj, mesh.material_name_lines[i]) + "usemtl " + quoted(mesh.material_names[i]) +
+                           " is in none of its material files: its faces render grey");
       materials.push_back(nullptr);
       continue;
     }
-    const auto& [m, library] = found->second;
+    const MtlMaterial* m = found->second.first;
+    const std::filesystem::path& library = libraries[found->second.second].first;
     warn_unsupported(L, library, *m);
     std::shared_ptr<const Texture> texture;
     if (m->map_kd)
@@ -144,10 +155,15 @@ std::vector<MeshPart> obj_mesh_parts(lua_State* L, const std::filesystem::path& 
   const std::vector<std::shared_ptr<const Material>>& materials = found->second;
   auto& parts = ctx.mesh_parts[mesh];
   if (parts.empty()) {
-    keep_bytes(L, mesh->memory_bytes());  // the parts hold the mesh again, at most
-    for (MaterialPart& part : split_by_material(*mesh))
+    // The parts hold the mesh again (vertices shared by several materials once in each): at
+    // most three corners per face, charged as they are.
+    size_t bytes = 0;
+    for (MaterialPart& part : split_by_material(*mesh)) {
+      bytes += part.mesh.memory_bytes();
       parts.push_back({std::make_shared<const TriangleMesh>(std::move(part.mesh)),
                        part.material < materials.size() ? materials[part.material] : nullptr});
+    }
+    keep_bytes(L, bytes);
   }
   return parts;
 }

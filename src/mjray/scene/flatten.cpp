@@ -33,6 +33,12 @@ bool fits_float(const Matrix4& m) {
 /// What one emitted instance of a node costs: primitives plus the mesh vertices it copies (at
 /// least 1 for a mesh, which is emitted even when empty, so that every emitted instance counts).
 uint64_t own_size(const SceneNode& node) {
+  if (!node.mesh_parts.empty()) {
+    uint64_t size = 0;
+    for (const MeshPart& part : node.mesh_parts)
+      size += std::max<uint64_t>(1, part.mesh->triangles.size() + part.mesh->positions.size() + part.mesh->normals.size());
+    return size;
+  }
   if (node.mesh)
     return std::max<uint64_t>(1, node.mesh->triangles.size() + node.mesh->positions.size() + node.mesh->normals.size());
   return node.shape ? 1 : 0;
@@ -266,8 +272,17 @@ World flatten(const RenderJob& job, std::vector<std::string>* warnings, uint64_t
   // A sun's shadow rays start beyond the scene, and its photons cover it.
   if (world.primitive_count() > 0) {
     const Bounds3 box = world.primitives.bounds();
-    for (Light& light : world.lights)
-      if (auto* sun = std::get_if<SunLight>(&light)) sun->fit_to_scene(box.centre(), length(box.diagonal()) / 2);
+    double diagonal2 = 0;
+    for (int a = 0; a < 3; ++a) diagonal2 += double(box.diagonal()[a]) * double(box.diagonal()[a]);
+    const double radius = std::sqrt(diagonal2) / 2;
+    for (Light& light : world.lights) {
+      auto* sun = std::get_if<SunLight>(&light);
+      if (!sun) continue;
+      if (!(radius < 1e18))
+        throw SceneError(job.where, "gr.render: the scene spans more than 10^18 units, too far for gr.sunlight's light "
+                                    "to cross it");
+      sun->fit_to_scene(box.centre(), float(radius));
+    }
   }
   return world;
 }

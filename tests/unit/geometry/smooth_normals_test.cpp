@@ -96,6 +96,23 @@ TEST(SmoothNormals, ATessellatedSpherePointsOutwardAndTrianglesWrittenApartAreWe
   EXPECT_EQ(smooth.normals.size(), size_t((kRings - 1) * kSegments + 2));
 }
 
+TEST(SmoothNormals, TheTipOfAFanOfManyFacesTakesTheirMeanWithoutComparingEveryPair) {
+  // A low cone of 100,000 faces: its tip's corners share the axis; a pairwise comparison
+  // would take 10^10 steps.
+  TriangleMesh m;
+  constexpr int kFaces = 100000;
+  m.positions.push_back({0, 0.1f, 0});
+  for (int i = 0; i < kFaces; ++i) {
+    const float a = 2 * std::numbers::pi_v<float> * float(i) / kFaces;
+    m.positions.push_back({std::cos(a), 0, -std::sin(a)});
+  }
+  for (int i = 0; i < kFaces; ++i) m.triangles.push_back({MeshCorner{0}, MeshCorner{1 + i}, MeshCorner{1 + (i + 1) % kFaces}});
+  const TriangleMesh smooth = with_smooth_normals(m, 30);
+  const Vector3 tip = normal_at(smooth, 0, 0);
+  EXPECT_NEAR(tip.y, 1, 1e-5f);
+  EXPECT_EQ(smooth.triangles[kFaces / 2][0].normal, smooth.triangles[0][0].normal);  // one shared normal
+}
+
 TEST(SmoothNormals, AFaceWithoutAreaIsLeftFlatAndTakesNoPartInItsNeighbours) {
   TriangleMesh m = cube();
   m.positions.push_back({2, 2, 2});

@@ -62,9 +62,20 @@ TEST(MtlReader, MalformedValuesNameTheFileAndLine) {
   EXPECT_EQ(error("newmtl a\nKd 0.5 red 0.2\n"), "m.mtl:2: 'Kd' needs a number, found 'red'");
   EXPECT_EQ(error("Kd 1 1 1\n"), "m.mtl:1: 'Kd' before any newmtl");
   EXPECT_EQ(error("newmtl a\n\nNs\n"), "m.mtl:3: 'Ns' needs a number");
-  EXPECT_EQ(error("newmtl a\nKd spectral file.rfl\n"), "m.mtl:2: 'Kd spectral' colours are not supported; give r g b");
+  EXPECT_EQ(error("newmtl a\nKd 0.5 0.2\n"), "m.mtl:2: 'Kd' needs 1 or 3 numbers, found 2");
+  EXPECT_EQ(error("newmtl a\nillum 3e9\n"), "m.mtl:2: 'illum' needs a whole number from 0 to 10");
   EXPECT_EQ(error("newmtl\n"), "m.mtl:1: newmtl needs a material name");
   EXPECT_EQ(error("Ka 1 1 1\nfoo bar\n"), "(no error)");  // statements it does not map are passed over
+}
+
+TEST(MtlReader, SpectralAndXyzColoursAreWarnedOfAndPassedOver) {
+  std::vector<std::string> warnings;
+  const auto materials = parse_mtl("newmtl a\nKd 0.2 0.3 0.4\nKs spectral metal.rfl\nTf xyz 1 1 1\n", "m.mtl", &warnings);
+  ASSERT_EQ(materials.size(), 1u);
+  EXPECT_FALSE(materials[0].ks);
+  EXPECT_FALSE(materials[0].tf);
+  EXPECT_EQ(warnings, (std::vector<std::string>{"m.mtl:3: 'Ks spectral' colours are not read; give r g b",
+                                                "m.mtl:4: 'Tf xyz' colours are not read; give r g b"}));
 }
 
 TEST(ObjMaterials, UsemtlNamesEachFaceAndMtllibNamesTheFiles) {
@@ -74,7 +85,7 @@ TEST(ObjMaterials, UsemtlNamesEachFaceAndMtllibNamesTheFiles) {
       "f 1 2 3\n"
       "usemtl red\n"
       "f 1 2 3 4\n"
-      "usemtl green leaf\n"
+      "usemtl green \t leaf\n"
       "f 2 3 4\n"
       "usemtl red\n"
       "f 1 3 4\n",
