@@ -88,6 +88,7 @@ Color WhittedIntegrator::light_sample(const ShadingFrame& frame, const LocalShad
   const Vector3 l = (sample.position - point) / distance;
   const float n_dot_l = dot(frame.n, l);
   if (n_dot_l <= 0) return {};  // the light is behind the surface
+  if (sample.intensity.is_black()) return {};  // outside a spot's cone: nothing to shadow
   // What the surface would not reflect needs no shadow ray: without a diffuse part, a
   // glass's narrow highlight is exactly zero (the power underflows) for most of an area
   // light's samples. Elsewhere the term is computed only for samples that arrive.
