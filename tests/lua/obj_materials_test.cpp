@@ -59,14 +59,22 @@ TEST_F(LuaObjMaterials, EachUsemtlGroupRendersInItsMtlMaterial) {
 TEST_F(LuaObjMaterials, GlassComesFromIllumOrDissolveWithNiAndTheSceneMaterialWins) {
   write("halves.obj", kTwoHalves);
   write("halves.mtl", "newmtl left\nKd 0.6 0.6 0.6\nillum 4\nNi 1.33\nnewmtl right\nd 0.5\nNi 1.0\n");
-  const SceneNode& node = node_of(scene("halves.obj"));
+  const SceneDescription glass = scene("halves.obj");
+  const SceneNode& node = node_of(glass);
+  write("mirror.mtl", "newmtl left\nKd 0.1 0.1 0.1\nKs 0.6 0.7 0.8\nillum 3\nnewmtl right\nKs 0.5 0.5 0.5\nillum 2\n");
+  write("mirror.obj", std::string("mtllib mirror.mtl\n") + (kTwoHalves + 18));
+  const SceneDescription mirror = scene("mirror.obj");
+  const SceneNode& mirrors = node_of(mirror);
+  EXPECT_FLOAT_EQ(std::get<ReflectiveMaterial>(*mirrors.mesh_parts.at(0).material).reflectivity, 0.7f);
+  EXPECT_TRUE(std::holds_alternative<PhongMaterial>(*mirrors.mesh_parts.at(1).material));  // illum 2: no mirror
   ASSERT_EQ(node.mesh_parts.size(), 2u);
   const auto& water = std::get<FresnelMaterial>(*node.mesh_parts[0].material);
   EXPECT_EQ(water.eta_inside, 1.33f);
   EXPECT_EQ(water.base.kd, Color(0, 0, 0));  // clear: no diffuse part
   EXPECT_EQ(std::get<FresnelMaterial>(*node.mesh_parts[1].material).eta_inside, 1.5f);  // Ni 1: a default
 
-  const SceneNode& own = node_of(scene("halves.obj", "node:set_material(gr.material({0.2,0.2,0.2}, {0,0,0}, 1))\n"));
+  const SceneDescription own_scene = scene("halves.obj", "node:set_material(gr.material({0.2,0.2,0.2}, {0,0,0}, 1))\n");
+  const SceneNode& own = node_of(own_scene);
   EXPECT_TRUE(own.mesh_parts.empty());
   EXPECT_EQ(std::get<PhongMaterial>(*own.material).kd, Color(0.2f, 0.2f, 0.2f));
 }
@@ -81,7 +89,7 @@ TEST_F(LuaObjMaterials, ATextureIsFoundBesideItsMtlFile) {
   std::filesystem::create_directories(dir_ / "model/maps");
   write_image(red, dir_ / "model/maps/red.png");
   const SceneDescription d = scene("model/halves.obj");
-  const auto& left = std::get<PhongMaterial>(*node_of(d).mesh_parts.at(0).material);
+  const auto& left = std::get<PhongMaterial>(*node_of(d).mesh_parts.at(0).material);  // d outlives it
   ASSERT_NE(left.texture, nullptr);
   EXPECT_TRUE(std::holds_alternative<ImageTexture>(*left.texture));
   EXPECT_TRUE(d.warnings.empty()) << d.warnings.at(0);

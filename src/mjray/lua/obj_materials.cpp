@@ -83,6 +83,9 @@ Material material_from(const MtlMaterial& m, std::shared_ptr<const Texture> text
   base.texture = std::move(texture);
   const bool see_through = (m.illum && (*m.illum == 4 || *m.illum == 6 || *m.illum == 7 || *m.illum == 9)) ||
                            (m.d && *m.d < 1) || (m.tr && *m.tr > 0);
+  // Ray-traced reflection (illum 3 and 5): a mirror as strong as the mean of Ks.
+  if (!see_through && m.illum && (*m.illum == 3 || *m.illum == 5) && m.ks)
+    return ReflectiveMaterial{base, std::clamp((m.ks->r + m.ks->g + m.ks->b) / 3, 0.f, 1.f)};
   if (!see_through) return base;
   // Clear glass: no diffuse part, its highlight kept; an index of 1 or less is the usual
   // default of exporters, not a choice, so glass takes 1.5 there.
