@@ -52,7 +52,7 @@ TEST_F(LuaLights, WrongArgumentsNameTheCallAndLine) {
   EXPECT_EQ(error_of("l = gr.spotlight({0,0,0}, {0,0,-1}, {1,1,1}, {1,0,0}, 0)\n"),
             at(1) + "gr.spotlight: argument 5 (cone_degrees) must be more than 0 and at most 180 degrees, got the number 0");
   EXPECT_EQ(error_of("l = gr.spotlight({0,0,0}, {0,0,-1}, {1,1,1}, {1,0,0}, 170, 20)\n"),
-            at(1) + "gr.spotlight: argument 6 (penumbra_degrees) must be from 0 to 10 degrees, got the number 20");
+            at(1) + "gr.spotlight: the cone (170°) and its penumbra (20°) together reach past 180°");
   EXPECT_EQ(error_of("l = gr.sunlight({0,-1,0}, {1,1,1}, 30)\n"),
             at(1) + "gr.sunlight: argument 3 (angular_diameter_degrees) must be from 0 to 20 degrees, got the number 30");
   EXPECT_EQ(error_of("l = gr.sunlight({0,-1,0})\n"), at(1) + "gr.sunlight: argument 2 (colour) must be a table of 3 numbers, got nothing");

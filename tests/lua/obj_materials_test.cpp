@@ -99,7 +99,7 @@ TEST_F(LuaObjMaterials, WhatIsMissingOrOutsideIsWarnedOfWithItsFileAndLineAndRen
   write("halves.obj", kTwoHalves);
   SceneDescription d = scene("halves.obj");
   ASSERT_EQ(d.warnings.size(), 1u);  // and not once more for each name it would have held
-  EXPECT_EQ(d.warnings[0], at(4) + (dir_ / "halves.obj").string() + ":1: cannot find the material file 'halves.mtl'");
+  EXPECT_EQ(d.warnings[0], at(2) + (dir_ / "halves.obj").string() + ":1: cannot find the material file 'halves.mtl'");  // the gr.mesh line
   test::TestJob job(d, 0, test::oracle_options());
   EXPECT_EQ(job.world().materials.size(), 1u);  // the default grey, for both halves
 
@@ -111,6 +111,14 @@ TEST_F(LuaObjMaterials, WhatIsMissingOrOutsideIsWarnedOfWithItsFileAndLineAndRen
             std::string::npos) << all;
   EXPECT_NE(all.find((dir_ / "halves.mtl").string() + ":1: 'left' glows (Ke), which mjray does not show yet"),
             std::string::npos) << all;
+
+  // A malformed value stops the load, naming the gr.mesh call and the .mtl line.
+  write("halves.mtl", "newmtl left\nKd 0.5 red 0.2\n");
+  EXPECT_EQ(error_of("root = gr.node('root')\nnode = gr.mesh('halves', 'halves.obj')\nroot:add_child(node)\n"
+                     "gr.render(root, 'out.png', 2, 1, {0,0,3}, {0,0,-1}, {0,1,0}, 20, {0,0,0}, "
+                     "{gr.light({0,0,3}, {1,1,1}, {1,0,0})})\n"),
+            at(2) + "gr.mesh: " + (dir_ / "halves.mtl").string() + ":2: 'Kd' needs a number, found 'red'");
+  write("halves.mtl", "newmtl left\nKd 1 0 0\n");
 
   // Names from the files reach the terminal escaped.
   write("evil.obj", "mtllib halves.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl \x1b]2;owned\x07\nf 1 2 3\n");

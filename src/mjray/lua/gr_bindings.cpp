@@ -278,7 +278,7 @@ class Snapshot {
     node->material = frozen_material(live->material);
     // Without a material of its own, a mesh takes its OBJ file's.
     if (!node->material && live->mesh && !live->mesh->material_names.empty() && !live->mesh_file.empty())
-      node->mesh_parts = obj_mesh_parts(L_, live->mesh_file, live->mesh);
+      node->mesh_parts = obj_mesh_parts(L_, live->where, live->mesh_file, live->mesh);
     for (const Transform& call : live->transform_calls)
       node->parent_from_node = post_multiply_ ? node->parent_from_node * call : call * node->parent_from_node;
     for (const auto& child : live->children) node->children.push_back(copy(child, depth + 1));

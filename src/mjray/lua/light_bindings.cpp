@@ -56,7 +56,10 @@ int gr_spotlight(lua_State* L) {
   if (falloff[1] == 0 && falloff[2] == 0) warn_if_0_to_255(L, light.colour, fn, "colour (with no distance falloff)");
   if (lua_isnoneornil(L, 5)) bad_argument(L, fn, 5, "cone_degrees", "a number");
   const double cone = arg_degrees(L, 5, fn, "cone_degrees", 0, false, 180, 0);
-  const double penumbra = arg_degrees(L, 6, fn, "penumbra_degrees", 0, true, 180 - cone, 0);
+  const double penumbra = arg_degrees(L, 6, fn, "penumbra_degrees", 0, true, 180, 0);
+  if (cone + penumbra > 180)  // past the whole sphere
+    throw ArgumentError(std::string(fn) + ": the cone (" + format_number(cone) + "°) and its penumbra (" +
+                        format_number(penumbra) + "°) together reach past 180°");
   light.cone = float(cone * kRadiansPerDegree);
   light.penumbra = float(penumbra * kRadiansPerDegree);
   push_shared(L, std::make_shared<Light>(light), kLightType);

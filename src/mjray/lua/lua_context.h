@@ -160,8 +160,9 @@ LoaderContext& context(lua_State* L);
 void set_context(lua_State* L, LoaderContext* ctx);
 
 /// The parts a node draws for `mesh`, read from `obj` (its file): one per material its faces
-/// use, each with the material its file's `.mtl` gives (warnings name what is missing).
-std::vector<MeshPart> obj_mesh_parts(lua_State* L, const std::filesystem::path& obj,
+/// use, each with the material its file's `.mtl` gives. Warnings and errors name `where`,
+/// the gr.mesh call, and the file and line at fault.
+std::vector<MeshPart> obj_mesh_parts(lua_State* L, const FileLocation& where, const std::filesystem::path& obj,
                                      const std::shared_ptr<const TriangleMesh>& mesh);
 
 /// Defines the `gr` table and the userdata types.
@@ -200,6 +201,8 @@ std::shared_ptr<const TriangleMesh> load_checked_obj(lua_State* L, const std::fi
 /// Adds "file:line: text" (the caller's line) to SceneDescription::warnings, once per line
 /// and text.
 void add_warning(lua_State* L, const std::string& text);
+/// add_warning for a call made earlier (`where`), such as the gr.mesh whose file is read late.
+void add_warning_at(lua_State* L, const FileLocation& where, const std::string& text);
 
 /// "file:line" of the Lua code that called the running C function.
 FileLocation caller_location(lua_State* L);
@@ -216,6 +219,13 @@ std::filesystem::path input_file(lua_State* L, const char* fn, const std::string
 /// What a refused read adds to its message: how the user allows more.
 std::string read_refusal_hint();
 
+/// An error that names an earlier call of the script (a gr.mesh whose file is read at
+/// gr.render): `guarded` reports it as it is, without the caller's line.
+struct EarlierCallError : std::runtime_error {
+  EarlierCallError(const FileLocation& where, const std::string& problem)
+      : std::runtime_error(where.to_string() + ": " + problem) {}
+};
+
 /// A C function that reports C++ exceptions as Lua errors at the caller's line (the
 /// exception is gone before lua_error unwinds, so no C++ destructor is skipped). F itself must
 /// report problems by throwing: a luaL_error/luaL_check* inside F would longjmp over F's
@@ -227,6 +237,8 @@ int guarded(lua_State* L) {
   int results = -1;
   try {
     results = F(L);
+  } catch (const EarlierCallError& e) {
+    lua_pushstring(L, e.what());
   } catch (const std::exception& e) {
     lua_pushstring(L, (caller_location(L).to_string() + ": " + error_message(e)).c_str());
   } catch (...) {

@@ -32,18 +32,18 @@ std::string quoted(const std::string& name) { return "'" + escape_control_charac
 
 /// A file a material file names, relative to that file's folder, if the scene may read it and
 /// it exists; otherwise a warning and nothing.
-std::optional<std::filesystem::path> named_file(lua_State* L, const std::filesystem::path& from, int line,
+std::optional<std::filesystem::path> named_file(lua_State* L, const FileLocation& where, const std::filesystem::path& from, int line,
                                                 const std::string& name, const char* statement) {
   const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name)
                                                                                : from.parent_path() / name;
   if (!context(L).read_access.allows(path)) {
-    add_warning(L, at(from, line) + statement + " " + quoted(name) +
-                       " is outside what the scene may read; run mjray with --allow-read DIR to let it");
+    add_warning_at(L, where, at(from, line) + statement + " " + quoted(name) +
+                       " is outside what the scene may read; run mjray with --allow-read DIR to let it read that folder");
     return std::nullopt;
   }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    add_warning(L, at(from, line) + "cannot find " + statement + " " + quoted(name));
+    add_warning_at(L, where, at(from, line) + "cannot find " + statement + " " + quoted(name));
     return std::nullopt;
   }
   record_input(L, path);
@@ -51,11 +51,11 @@ std::optional<std::filesystem::path> named_file(lua_State* L, const std::filesys
 }
 
 /// The materials of one .mtl file (none, with a warning, when it cannot be read).
-std::vector<MtlMaterial> read_library(lua_State* L, const std::filesystem::path& path) {
+std::vector<MtlMaterial> read_library(lua_State* L, const FileLocation& where, const std::filesystem::path& path) {
   std::error_code ec;
   const uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxMtlBytes) {
-    add_warning(L, path.string() + ": " + (ec ? "cannot read this material file" : "a material file over 16 MiB is not read"));
+    add_warning_at(L, where, path.string() + ": " + (ec ? "cannot read this material file" : "a material file over 16 MiB is not read"));
     return {};
   }
   keep_bytes(L, size_t(size));
@@ -66,12 +66,18 @@ std::vector<MtlMaterial> read_library(lua_State* L, const std::filesystem::path&
   try {
     materials = parse_mtl(text, path.string(), &warnings);
   } catch (const SceneError& e) {
-    throw ArgumentError(std::string("gr.mesh: ") + e.what());
+    throw EarlierCallError(where, std::string("gr.mesh: ") + e.what());
   }
-  for (const std::string& warning : warnings) add_warning(L, escape_control_characters(warning, false));
+  for (const std::string& warning : warnings) add_warning_at(L, where, escape_control_characters(warning, false));
   // What the parsed materials hold beyond the text: a few hundred bytes for a short `newmtl`.
   keep_bytes(L, materials.size() * sizeof(MtlMaterial));
   return materials;
+}
+
+/// Whether an MTL material is see-through: glass.
+bool is_glass(const MtlMaterial& m) {
+  return (m.illum && (*m.illum == 4 || *m.illum == 6 || *m.illum == 7 || *m.illum == 9)) || (m.d && *m.d < 1) ||
+         (m.tr && *m.tr > 0);
 }
 
 /// mjray's material for an MTL material (its kd texture already read, or null).
@@ -81,8 +87,7 @@ Material material_from(const MtlMaterial& m, std::shared_ptr<const Texture> text
   base.ks = m.ks.value_or(Color(0, 0, 0));
   base.shininess = std::clamp(m.ns.value_or(10.f), 1.f, 10000.f);
   base.texture = std::move(texture);
-  const bool see_through = (m.illum && (*m.illum == 4 || *m.illum == 6 || *m.illum == 7 || *m.illum == 9)) ||
-                           (m.d && *m.d < 1) || (m.tr && *m.tr > 0);
+  const bool see_through = is_glass(m);
   // Ray-traced reflection (illum 3 and 5): a mirror as strong as the mean of Ks.
   if (!see_through && m.illum && (*m.illum == 3 || *m.illum == 5) && m.ks)
     return ReflectiveMaterial{base, std::clamp((m.ks->r + m.ks->g + m.ks->b) / 3, 0.f, 1.f)};
@@ -96,28 +101,29 @@ Material material_from(const MtlMaterial& m, std::shared_ptr<const Texture> text
 }
 
 /// Warns once per file of the statements it holds that mjray does not show yet.
-void warn_unsupported(lua_State* L, const std::filesystem::path& library, const MtlMaterial& m) {
+void warn_unsupported(lua_State* L, const FileLocation& where, const std::filesystem::path& library,
+                      const MtlMaterial& m, bool glass) {
   if (m.ke && !m.ke->is_black())
-    add_warning(L, at(library, m.line) + quoted(m.name) + " glows (Ke), which mjray does not show yet: it renders unlit");
-  if (m.map_d) add_warning(L, at(library, m.map_d->line) + "map_d (cut-outs) is not supported yet; the surface is whole");
-  if (m.map_bump) add_warning(L, at(library, m.map_bump->line) + "bump maps are not supported yet; the surface is smooth");
-  if (m.tf && !(m.tf->r == 1 && m.tf->g == 1 && m.tf->b == 1))
-    add_warning(L, at(library, m.line) + quoted(m.name) + " has a Tf colour, which mjray does not show yet: its glass is clear");
+    add_warning_at(L, where, at(library, m.line) + quoted(m.name) + " glows (Ke), which mjray does not show yet: it renders as its Kd says, without the glow");
+  if (m.map_d) add_warning_at(L, where, at(library, m.map_d->line) + "map_d (cut-outs) is not supported yet; the surface is whole");
+  if (m.map_bump) add_warning_at(L, where, at(library, m.map_bump->line) + "bump maps are not supported yet; the surface is smooth");
+  if (glass && m.tf && !(m.tf->r == 1 && m.tf->g == 1 && m.tf->b == 1))
+    add_warning_at(L, where, at(library, m.line) + quoted(m.name) + " has a Tf colour, which mjray does not show yet: its glass is clear");
 }
 
 /// The material of each of the mesh's `usemtl` names (null where there is none).
-std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, const std::filesystem::path& obj,
-                                                                 const TriangleMesh& mesh) {
+std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, const FileLocation& where,
+                                                                 const std::filesystem::path& obj, const TriangleMesh& mesh) {
   // Compute every material of the files the OBJ names, the first of a name winning.
   std::map<std::string, std::pair<const MtlMaterial*, size_t>> by_name;  // the material, its library
   std::vector<std::pair<std::filesystem::path, std::vector<MtlMaterial>>> libraries;
   for (const MaterialLibrary& library : mesh.material_libraries)
-    if (auto path = named_file(L, obj, library.line, library.file, "the material file"))
-      libraries.emplace_back(*path, read_library(L, *path));
+    if (auto path = named_file(L, where, obj, library.line, library.file, "the material file"))
+      libraries.emplace_back(*path, read_library(L, where, *path));
   for (size_t l = 0; l < libraries.size(); ++l)
     for (const MtlMaterial& m : libraries[l].second) by_name.try_emplace(m.name, &m, l);
   if (mesh.material_libraries.empty())
-    add_warning(L, at(obj, mesh.material_name_lines.front()) + "usemtl with no mtllib: its faces render grey");
+    add_warning_at(L, where, at(obj, mesh.material_name_lines.front()) + "usemtl with no mtllib: its faces render grey");
 
   // Compute each name's material, reading its texture within the sandbox.
   std::vector<std::shared_ptr<const Material>> materials;
@@ -125,17 +131,17 @@ std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, co
     const auto found = by_name.find(mesh.material_names[i]);
     if (found == by_name.end()) {
       if (!libraries.empty())  // (a file that could not be read has been warned of)
-        add_warning(L, at(obj, mesh.material_name_lines[i]) + "usemtl " + quoted(mesh.material_names[i]) +
+        add_warning_at(L, where, at(obj, mesh.material_name_lines[i]) + "usemtl " + quoted(mesh.material_names[i]) +
                            " is in none of its material files: its faces render grey");
       materials.push_back(nullptr);
       continue;
     }
     const MtlMaterial* m = found->second.first;
     const std::filesystem::path& library = libraries[found->second.second].first;
-    warn_unsupported(L, library, *m);
+    warn_unsupported(L, where, library, *m, is_glass(*m));
     std::shared_ptr<const Texture> texture;
     if (m->map_kd)
-      if (auto image = named_file(L, library, m->map_kd->line, m->map_kd->file, "the texture")) {
+      if (auto image = named_file(L, where, library, m->map_kd->line, m->map_kd->file, "the texture")) {
         ImageTexture t;
         t.image = std::move(*read_kept_image(L, "gr.mesh", *image, {}));
         if (context(L).options.srgb_textures && !holds_linear_values(*image)) decode_srgb_8bit(t.image);
@@ -148,13 +154,13 @@ std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, co
 
 }  // namespace
 
-std::vector<MeshPart> obj_mesh_parts(lua_State* L, const std::filesystem::path& obj,
+std::vector<MeshPart> obj_mesh_parts(lua_State* L, const FileLocation& where, const std::filesystem::path& obj,
                                      const std::shared_ptr<const TriangleMesh>& mesh) {
   // Compute the file's materials once per file, and the split once per mesh.
   LoaderContext& ctx = context(L);
   const auto key = std::filesystem::weakly_canonical(obj);
   auto found = ctx.obj_materials.find(key);
-  if (found == ctx.obj_materials.end()) found = ctx.obj_materials.emplace(key, obj_file_materials(L, obj, *mesh)).first;
+  if (found == ctx.obj_materials.end()) found = ctx.obj_materials.emplace(key, obj_file_materials(L, where, obj, *mesh)).first;
   const std::vector<std::shared_ptr<const Material>>& materials = found->second;
   auto& parts = ctx.mesh_parts[mesh];
   if (parts.empty()) {

@@ -62,9 +62,11 @@ void record_input(lua_State* L, const std::filesystem::path& path) {
   if (ctx.options.inputs_read) ctx.options.inputs_read->push_back(path);
 }
 
-void add_warning(lua_State* L, const std::string& text) {
+void add_warning(lua_State* L, const std::string& text) { add_warning_at(L, caller_location(L), text); }
+
+void add_warning_at(lua_State* L, const FileLocation& where, const std::string& text) {
   LoaderContext& ctx = context(L);
-  const std::string warning = caller_location(L).to_string() + ": " + text;
+  const std::string warning = where.to_string() + ": " + text;
   if (ctx.warned.insert(warning).second) ctx.description->warnings.push_back(warning);
 }
 
