@@ -21,6 +21,7 @@ root:add_child(ball)
 local spot = gr.spotlight({1.5, 6, 3}, {-1.5, -6, -3.6}, {1, 0.95, 0.85}, {1, 0, 0}, 22, 8)
 -- direction of travel, colour (what a surface facing it receives), angular diameter
 local sun = gr.sunlight({-0.6, -0.64, -0.48}, {0.9, 0.85, 0.8}, 3)
-for name, light in pairs({gr_spotlight = spot, gr_sunlight = sun}) do
+for _, each in ipairs({{'gr_spotlight', spot}, {'gr_sunlight', sun}}) do
+  local name, light = each[1], each[2]
   gr.render(root, name .. '.png', 200, 150, {0, 4.5, 7}, {0, -0.6, -1}, {0, 1, 0}, 38, {0.15, 0.15, 0.17}, {light})
 end
