@@ -56,7 +56,8 @@ TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float max_angle_degre
   for (size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
   std::vector<uint32_t> around(face_count * 3), fill(start.begin(), start.end() - 1);
   for (size_t f = 0; f < face_count; ++f)
-    for (uint32_t k = 0; k < 3; ++k) around[fill[vertex_of[size_t(mesh.triangles[f][k].position)]]++] = uint32_t(f * 3 + k);
+    for (uint32_t k = 0; k < 3; ++k)
+      around[fill[vertex_of[size_t(mesh.triangles[f][k].position)]]++] = uint32_t(f * 3 + k);
 
   // Compute each corner's normal from the faces around its vertex within the angle; corners
   // of one vertex that come out equal share one normal.
@@ -67,8 +68,9 @@ TriangleMesh with_smooth_normals(const TriangleMesh& mesh, float max_angle_degre
   for (size_t f = 0; f < face_count; ++f)
     for (size_t k = 0; k < 3; ++k) {
       const auto& t = mesh.triangles[f];
-      angle_at[f * 3 + k] = corner_angle(mesh.positions[size_t(t[k].position)], mesh.positions[size_t(t[(k + 1) % 3].position)],
-                                         mesh.positions[size_t(t[(k + 2) % 3].position)]);
+      angle_at[f * 3 + k] =
+          corner_angle(mesh.positions[size_t(t[k].position)], mesh.positions[size_t(t[(k + 1) % 3].position)],
+                       mesh.positions[size_t(t[(k + 2) % 3].position)]);
     }
   for (size_t v = 0; v + 1 < start.size(); ++v) {
     const size_t first_normal = out.normals.size();

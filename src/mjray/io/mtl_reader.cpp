@@ -41,8 +41,8 @@ class MtlParser {
       materials_.back().line = line;
       return;
     }
-    static constexpr std::string_view kMapped[] = {"Kd", "Ks", "Ke", "Tf", "Ns", "Ni", "d", "Tr", "illum",
-                                                   "map_Kd", "map_d", "map_Bump", "map_bump", "bump"};
+    static constexpr std::string_view kMapped[] = {"Kd", "Ks",    "Ke",     "Tf",    "Ns",       "Ni",       "d",
+                                                   "Tr", "illum", "map_Kd", "map_d", "map_Bump", "map_bump", "bump"};
     bool mapped = false;
     for (const std::string_view k : kMapped) mapped |= key == k;
     if (!mapped) return;
@@ -52,15 +52,22 @@ class MtlParser {
       const std::optional<Color> c = colour(w);
       if (!c) return;
       (key == "Kd" ? m.kd : key == "Ks" ? m.ks : key == "Ke" ? m.ke : m.tf) = *c;
-    }
-    else if (key == "Ns") m.ns = number(w, 1);
-    else if (key == "Ni") m.ni = number(w, 1);
-    else if (key == "d") m.d = number(w, w.size() > 2 && w[1] == "-halo" ? 2 : 1);
-    else if (key == "Tr") m.tr = number(w, 1);
-    else if (key == "illum") m.illum = illumination(w);
-    else if (key == "map_Kd") m.map_kd = map(w);
-    else if (key == "map_d") m.map_d = map(w);
-    else m.map_bump = map(w);
+    } else if (key == "Ns")
+      m.ns = number(w, 1);
+    else if (key == "Ni")
+      m.ni = number(w, 1);
+    else if (key == "d")
+      m.d = number(w, w.size() > 2 && w[1] == "-halo" ? 2 : 1);
+    else if (key == "Tr")
+      m.tr = number(w, 1);
+    else if (key == "illum")
+      m.illum = illumination(w);
+    else if (key == "map_Kd")
+      m.map_kd = map(w);
+    else if (key == "map_d")
+      m.map_d = map(w);
+    else
+      m.map_bump = map(w);
   }
 
   std::vector<MtlMaterial> finish() { return std::move(materials_); }
@@ -107,7 +114,9 @@ class MtlParser {
     return {std::string(w.back()), line_};
   }
 
-  [[noreturn]] void fail(const std::string& problem) const { throw SceneError(FileLocation{source_name_, line_}, problem); }
+  [[noreturn]] void fail(const std::string& problem) const {
+    throw SceneError(FileLocation{source_name_, line_}, problem);
+  }
 
   const std::string& source_name_;
   std::vector<std::string>* warnings_;

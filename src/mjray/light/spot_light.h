@@ -19,8 +19,8 @@ struct SpotLight {
   Vector3 direction{0, 0, -1};  ///< unit: the cone's axis
   Color colour;
   float falloff[3] = {1, 0, 0};
-  float cone = 0.5f;            ///< radians: the half-angle of the fully lit cone
-  float penumbra = 0;           ///< radians beyond `cone` over which the light fades to nothing
+  float cone = 0.5f;   ///< radians: the half-angle of the fully lit cone
+  float penumbra = 0;  ///< radians beyond `cone` over which the light fades to nothing
 
   float attenuation(float d) const { return falloff_attenuation(falloff, d); }
   /// The fraction of `colour` sent along the unit direction `w` (from the light).
@@ -31,7 +31,9 @@ struct SpotLight {
   /// The light arriving at `receiver` (u is unused). Out of line, as the sun's: the loops
   /// over light samples inline the point and area lights' instead.
   LightSample sample_li(const Point3& receiver, Point2 u) const;
-  std::array<Point3, 4> sample_region(const Point3& /*receiver*/) const { return {position, position, position, position}; }
+  std::array<Point3, 4> sample_region(const Point3& /*receiver*/) const {
+    return {position, position, position, position};
+  }
 
   /// Photons: from the position, only into the outer cone, each carrying profile × intensity.
   EmissionPoint emission_point(Point2 /*u*/) const { return {position, colour}; }

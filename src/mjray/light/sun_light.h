@@ -18,7 +18,7 @@ namespace mjray {
 struct SunLight {
   Vector3 direction{0, -1, 0};  ///< unit: the way its light travels
   Color colour;
-  float half_angle = 0;         ///< radians: half the sun's angular diameter
+  float half_angle = 0;  ///< radians: half the sun's angular diameter
   /// A ball around the scene, set by fit_to_scene: where shadow rays start beyond, and what
   /// its photons cover.
   Point3 scene_centre;
@@ -46,7 +46,9 @@ struct SunLight {
     const Vector3 axis = -direction;
     const Basis b = orthonormal_basis(axis);
     const float r = half_angle > 0 ? std::tan(half_angle) : 0, far = clearance(receiver);
-    const auto corner = [&](float s, float t) { return receiver + (axis + b.tangent * (r * s) + b.bitangent * (r * t)) * far; };
+    const auto corner = [&](float s, float t) {
+      return receiver + (axis + b.tangent * (r * s) + b.bitangent * (r * t)) * far;
+    };
     return {corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)};
   }
   /// A photon's flux does not fall off.

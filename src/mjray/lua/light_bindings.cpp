@@ -39,8 +39,9 @@ double arg_degrees(lua_State* L, int index, const char* fn, const char* what, do
   const double degrees = arg_number(L, index, fn, what);
   if (!(low_included ? degrees >= low : degrees > low) || !(degrees <= high))
     throw ArgumentError(std::string(fn) + ": argument " + std::to_string(index) + " (" + what + ") must be " +
-                        (low_included ? "from " : "more than ") + format_number(low) + (low_included ? " to " : " and at most ") +
-                        format_number(high) + " degrees, got " + describe(L, index));
+                        (low_included ? "from " : "more than ") + format_number(low) +
+                        (low_included ? " to " : " and at most ") + format_number(high) + " degrees, got " +
+                        describe(L, index));
   return degrees;
 }
 
@@ -84,7 +85,8 @@ int gr_sunlight(lua_State* L) {
 
 void register_lights(lua_State* L) {
   lua_getglobal(L, "gr");
-  static const luaL_Reg functions[] = {{"spotlight", guarded<gr_spotlight>}, {"sunlight", guarded<gr_sunlight>}, {nullptr, nullptr}};
+  static const luaL_Reg functions[] = {
+      {"spotlight", guarded<gr_spotlight>}, {"sunlight", guarded<gr_sunlight>}, {nullptr, nullptr}};
   luaL_setfuncs(L, functions, 0);
   lua_pop(L, 1);
 }

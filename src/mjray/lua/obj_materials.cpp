@@ -25,20 +25,25 @@ namespace {
 constexpr uintmax_t kMaxMtlBytes = uintmax_t(16) << 20;
 
 /// "OBJFILE:LINE: " for warnings about a statement of a file the scene read.
-std::string at(const std::filesystem::path& file, int line) { return file.string() + ":" + std::to_string(line) + ": "; }
+std::string at(const std::filesystem::path& file, int line) {
+  return file.string() + ":" + std::to_string(line) + ": ";
+}
 
 /// A name from a file, quoted for a warning: its control characters escaped, as print's are.
 std::string quoted(const std::string& name) { return "'" + escape_control_characters(name, false) + "'"; }
 
 /// A file a material file names, relative to that file's folder, if the scene may read it and
 /// it exists; otherwise a warning and nothing.
-std::optional<std::filesystem::path> named_file(lua_State* L, const FileLocation& where, const std::filesystem::path& from, int line,
-                                                const std::string& name, const char* statement) {
-  const std::filesystem::path path = std::filesystem::path(name).is_absolute() ? std::filesystem::path(name)
-                                                                               : from.parent_path() / name;
+std::optional<std::filesystem::path> named_file(lua_State* L, const FileLocation& where,
+                                                const std::filesystem::path& from, int line, const std::string& name,
+                                                const char* statement) {
+  const std::filesystem::path path =
+      std::filesystem::path(name).is_absolute() ? std::filesystem::path(name) : from.parent_path() / name;
   if (!context(L).read_access.allows(path)) {
-    add_warning_at(L, where, at(from, line) + statement + " " + quoted(name) +
-                       " is outside what the scene may read; run mjray with --allow-read DIR to let it read that folder");
+    add_warning_at(
+        L, where,
+        at(from, line) + statement + " " + quoted(name) +
+            " is outside what the scene may read; run mjray with --allow-read DIR to let it read that folder");
     return std::nullopt;
   }
   std::error_code ec;
@@ -55,7 +60,9 @@ std::vector<MtlMaterial> read_library(lua_State* L, const FileLocation& where, c
   std::error_code ec;
   const uintmax_t size = std::filesystem::file_size(path, ec);
   if (ec || size > kMaxMtlBytes) {
-    add_warning_at(L, where, path.string() + ": " + (ec ? "cannot read this material file" : "a material file over 16 MiB is not read"));
+    add_warning_at(
+        L, where,
+        path.string() + ": " + (ec ? "cannot read this material file" : "a material file over 16 MiB is not read"));
     return {};
   }
   keep_bytes(L, size_t(size));
@@ -104,16 +111,24 @@ Material material_from(const MtlMaterial& m, std::shared_ptr<const Texture> text
 void warn_unsupported(lua_State* L, const FileLocation& where, const std::filesystem::path& library,
                       const MtlMaterial& m, bool glass) {
   if (m.ke && !m.ke->is_black())
-    add_warning_at(L, where, at(library, m.line) + quoted(m.name) + " glows (Ke), which mjray does not show yet: it renders as its Kd says, without the glow");
-  if (m.map_d) add_warning_at(L, where, at(library, m.map_d->line) + "map_d (cut-outs) is not supported yet; the surface is whole");
-  if (m.map_bump) add_warning_at(L, where, at(library, m.map_bump->line) + "bump maps are not supported yet; the surface is smooth");
+    add_warning_at(L, where,
+                   at(library, m.line) + quoted(m.name) +
+                       " glows (Ke), which mjray does not show yet: it renders as its Kd says, without the glow");
+  if (m.map_d)
+    add_warning_at(L, where,
+                   at(library, m.map_d->line) + "map_d (cut-outs) is not supported yet; the surface is whole");
+  if (m.map_bump)
+    add_warning_at(L, where, at(library, m.map_bump->line) + "bump maps are not supported yet; the surface is smooth");
   if (glass && m.tf && !(m.tf->r == 1 && m.tf->g == 1 && m.tf->b == 1))
-    add_warning_at(L, where, at(library, m.line) + quoted(m.name) + " has a Tf colour, which mjray does not show yet: its glass is clear");
+    add_warning_at(
+        L, where,
+        at(library, m.line) + quoted(m.name) + " has a Tf colour, which mjray does not show yet: its glass is clear");
 }
 
 /// The material of each of the mesh's `usemtl` names (null where there is none).
 std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, const FileLocation& where,
-                                                                 const std::filesystem::path& obj, const TriangleMesh& mesh) {
+                                                                const std::filesystem::path& obj,
+                                                                const TriangleMesh& mesh) {
   // Compute every material of the files the OBJ names, the first of a name winning.
   std::map<std::string, std::pair<const MtlMaterial*, size_t>> by_name;  // the material, its library
   std::vector<std::pair<std::filesystem::path, std::vector<MtlMaterial>>> libraries;
@@ -123,7 +138,8 @@ std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, co
   for (size_t l = 0; l < libraries.size(); ++l)
     for (const MtlMaterial& m : libraries[l].second) by_name.try_emplace(m.name, &m, l);
   if (mesh.material_libraries.empty())
-    add_warning_at(L, where, at(obj, mesh.material_name_lines.front()) + "usemtl with no mtllib: its faces render grey");
+    add_warning_at(L, where,
+                   at(obj, mesh.material_name_lines.front()) + "usemtl with no mtllib: its faces render grey");
 
   // Compute each name's material, reading its texture within the sandbox.
   std::vector<std::shared_ptr<const Material>> materials;
@@ -131,7 +147,8 @@ std::vector<std::shared_ptr<const Material>> obj_file_materials(lua_State* L, co
     const auto found = by_name.find(mesh.material_names[i]);
     if (found == by_name.end()) {
       if (!libraries.empty())  // (a file that could not be read has been warned of)
-        add_warning_at(L, where, at(obj, mesh.material_name_lines[i]) + "usemtl " + quoted(mesh.material_names[i]) +
+        add_warning_at(L, where,
+                       at(obj, mesh.material_name_lines[i]) + "usemtl " + quoted(mesh.material_names[i]) +
                            " is in none of its material files: its faces render grey");
       materials.push_back(nullptr);
       continue;
@@ -160,7 +177,8 @@ std::vector<MeshPart> obj_mesh_parts(lua_State* L, const FileLocation& where, co
   LoaderContext& ctx = context(L);
   const auto key = std::filesystem::weakly_canonical(obj);
   auto found = ctx.obj_materials.find(key);
-  if (found == ctx.obj_materials.end()) found = ctx.obj_materials.emplace(key, obj_file_materials(L, where, obj, *mesh)).first;
+  if (found == ctx.obj_materials.end())
+    found = ctx.obj_materials.emplace(key, obj_file_materials(L, where, obj, *mesh)).first;
   const std::vector<std::shared_ptr<const Material>>& materials = found->second;
   auto& parts = ctx.mesh_parts[mesh];
   if (parts.empty()) {
