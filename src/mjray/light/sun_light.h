@@ -35,6 +35,9 @@ struct SunLight {
     const float r = std::tan(half_angle);
     return axis + b.tangent * (r * d.u) + b.bitangent * (r * d.v);
   }
+  /// The radius of a disc across its light whose lines from every point of the sun's disc
+  /// still cover a ball of radius r: r / cos of its half-angle.
+  float covering_radius(float r) const { return r / std::cos(half_angle); }
   /// How far back toward the sun a shadow ray from `receiver` must go to clear the scene.
   float clearance(const Point3& receiver) const { return length(receiver - scene_centre) + 2 * scene_radius + 1; }
 

@@ -81,9 +81,7 @@ int gr_arealight(lua_State* L) {
   AreaLight light;
   light.corner = arg_point(L, 1, fn, "position");
   light.colour = arg_light_colour(L, 2, fn, "colour");
-  const auto falloff = arg_tuple3(L, 3, fn, "falloff");
-  for (int i = 0; i < 3; ++i) light.falloff[i] = float(falloff[size_t(i)]);
-  if (falloff[1] == 0 && falloff[2] == 0) warn_if_0_to_255(L, light.colour, fn, "colour (with no distance falloff)");
+  arg_falloff(L, 3, fn, light.colour, light.falloff);
   light.edge1 = arg_point(L, 4, fn, "corner1") - light.corner;
   light.edge2 = arg_point(L, 5, fn, "corner2") - light.corner;
   if (!(length(cross(light.edge1, light.edge2)) > 0))

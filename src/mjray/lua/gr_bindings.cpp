@@ -239,9 +239,7 @@ int gr_light(lua_State* L) {
   PointLight light;
   light.position = arg_point(L, 1, fn, "position");
   light.colour = arg_light_colour(L, 2, fn, "colour");
-  const auto falloff = arg_tuple3(L, 3, fn, "falloff");
-  for (int i = 0; i < 3; ++i) light.falloff[i] = float(falloff[size_t(i)]);
-  if (falloff[1] == 0 && falloff[2] == 0) warn_if_0_to_255(L, light.colour, fn, "colour (with no distance falloff)");
+  arg_falloff(L, 3, fn, light.colour, light.falloff);
   push_shared(L, std::make_shared<Light>(light), kLightType);
   return 1;
 }

@@ -52,9 +52,7 @@ int gr_spotlight(lua_State* L) {
   light.position = arg_point(L, 1, fn, "position");
   light.direction = arg_direction(L, 2, fn, "direction");
   light.colour = arg_light_colour(L, 3, fn, "colour");
-  const auto falloff = arg_tuple3(L, 4, fn, "falloff");
-  for (int i = 0; i < 3; ++i) light.falloff[i] = float(falloff[size_t(i)]);
-  if (falloff[1] == 0 && falloff[2] == 0) warn_if_0_to_255(L, light.colour, fn, "colour (with no distance falloff)");
+  arg_falloff(L, 4, fn, light.colour, light.falloff);
   if (lua_isnoneornil(L, 5)) bad_argument(L, fn, 5, "cone_degrees", "a number");
   const double cone = arg_degrees(L, 5, fn, "cone_degrees", 0, false, 180, 0);
   const double penumbra = arg_degrees(L, 6, fn, "penumbra_degrees", 0, true, 180, 0);

@@ -165,6 +165,12 @@ void warn_if_0_to_255(lua_State* L, const Color& c, const char* fn, const char* 
                      "divide by 255)");
 }
 
+void arg_falloff(lua_State* L, int index, const char* fn, const Color& colour, float (&falloff)[3]) {
+  const auto given = arg_tuple3(L, index, fn, "falloff");
+  for (int i = 0; i < 3; ++i) falloff[i] = float(given[size_t(i)]);
+  if (given[1] == 0 && given[2] == 0) warn_if_0_to_255(L, colour, fn, "colour (with no distance falloff)");
+}
+
 std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, const char* what) {
   auto* node = test_shared<LuaNode>(L, index, kNodeType);
   if (!node) bad_argument(L, fn, index, what, "a node");

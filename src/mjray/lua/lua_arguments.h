@@ -75,6 +75,9 @@ Color arg_color(lua_State* L, int index, const char* fn, const char* what);
 Color arg_light_colour(lua_State* L, int index, const char* fn, const char* what);
 /// Warns (once per line) when a colour has a component above 2, which looks like 0-255.
 void warn_if_0_to_255(lua_State* L, const Color& colour, const char* fn, const char* what);
+/// A light's falloff {c0, c1, c2} into `falloff`; a light that does not fall off with distance
+/// has its `colour` checked by warn_if_0_to_255.
+void arg_falloff(lua_State* L, int index, const char* fn, const Color& colour, float (&falloff)[3]);
 std::shared_ptr<LuaNode>& arg_node(lua_State* L, int index, const char* fn, const char* what);
 /// A number as a person writes it: "0", "2.5", "180".
 std::string format_number(double value);

@@ -117,8 +117,7 @@ PhotonSource::PhotonSource(const std::vector<Light>& lights, std::vector<Boundin
       const BoundingSphere& target = targets_[size_t(t)];
       double share = 0;
       if (const SunLight* sun = distant_light(lights[l])) {
-        const float widen = 1 / std::cos(sun->half_angle);
-        share = double(brightness(sun->colour)) * cross_section({target.centre, target.radius * widen});
+        share = double(brightness(sun->colour)) * cross_section({target.centre, sun->covering_radius(target.radius)});
       } else {
         const EmissionPoint centre = emission_point(lights[l], {0.5f, 0.5f});
         const Cone cone = Cone::toward(centre.position, target);
@@ -169,12 +168,9 @@ EmittedPhoton PhotonSource::emit_from_sun(const SunLight& sun, size_t c, uint64_
   // A point across the disc the choice's ball (a target's, or the scene's) shows the sun, a
   // direction from the sun's disc, and a start beyond the scene on the line through both.
   const Choice& choice = choices_[c];
-  // A ball's disc is widened by 1 / cos of the sun's half-angle, so that the tilted lines
-  // through its rim still cover the ball.
-  const float widen = 1 / std::cos(sun.half_angle);
   const auto ball_of = [&](const Choice& k) {
     const BoundingSphere b = k.target < 0 ? BoundingSphere{sun.scene_centre, sun.scene_radius} : targets_[size_t(k.target)];
-    return BoundingSphere{b.centre, b.radius * widen};
+    return BoundingSphere{b.centre, sun.covering_radius(b.radius)};  // so tilted lines still cover it
   };
   const BoundingSphere ball = ball_of(choice);
   const float u1 = random.uniform(), u2 = random.uniform();
